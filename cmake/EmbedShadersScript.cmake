@@ -1,0 +1,12 @@
+# Called by oss_embed_shaders: writes OUT with one entry per shader file.
+set(_body "// Generated from the .glsl files in osgShadowSilhouette/shaders. Do not edit.\n")
+string(APPEND _body "#include \"ShaderSource.h\"\n\nnamespace osgShadowSilhouette {\nnamespace detail {\n\n")
+string(APPEND _body "const EmbeddedShader* embeddedShaders()\n{\n    static const EmbeddedShader table[] = {\n")
+foreach(_f ${FILES})
+  get_filename_component(_name ${_f} NAME)
+  file(READ ${_f} _src)
+  string(APPEND _body "        {\"${_name}\", R\"oss_glsl(${_src})oss_glsl\"},\n")
+endforeach()
+string(APPEND _body "        {nullptr, nullptr}\n    };\n    return table;\n}\n\n} // namespace detail\n} // namespace osgShadowSilhouette\n")
+file(WRITE ${OUT}.tmp "${_body}")
+file(RENAME ${OUT}.tmp ${OUT})

@@ -1,0 +1,285 @@
+#include <osgShadowSilhouette/LightSpace>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+bool finite(const osg::Vec3d& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+bool finite(const osg::Vec4d& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()) && std::isfinite(v.w());
+}
+
+/** Any unit vector orthogonal to d (d need not be normalized). */
+osg::Vec3d orthogonal(const osg::Vec3d& d)
+{
+    const osg::Vec3d axis = std::fabs(d.z()) < 0.9 * d.length() ? osg::Vec3d(0, 0, 1) : osg::Vec3d(0, 1, 0);
+    osg::Vec3d o = axis ^ d;
+    o.normalize();
+    return o;
+}
+
+struct Range
+{
+    double lo = std::numeric_limits<double>::max();
+    double hi = -std::numeric_limits<double>::max();
+    void expand(double v) { lo = std::min(lo, v); hi = std::max(hi, v); }
+    bool empty() const { return lo > hi; }
+};
+
+std::array<osg::Vec3d, 8> boxCorners(const osg::BoundingBoxd& box)
+{
+    std::array<osg::Vec3d, 8> c;
+    for (unsigned int i = 0; i < 8; ++i) c[i] = box.corner(i);
+    return c;
+}
+
+using Polygon = std::vector<osg::Vec3d>;
+
+/** Sutherland-Hodgman: the part of a convex polygon where plane.xyz . p + plane.w >= 0.
+ *  New vertices made on the plane are appended to cut. */
+Polygon clipPolygon(const Polygon& poly, const osg::Vec4d& plane, Polygon& cut)
+{
+    Polygon out;
+    const std::size_t n = poly.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const osg::Vec3d& a = poly[i];
+        const osg::Vec3d& b = poly[(i + 1) % n];
+        const double da = plane.x() * a.x() + plane.y() * a.y() + plane.z() * a.z() + plane.w();
+        const double db = plane.x() * b.x() + plane.y() * b.y() + plane.z() * b.z() + plane.w();
+        if (da >= 0.0) out.push_back(a);
+        if ((da >= 0.0) != (db >= 0.0))
+        {
+            const osg::Vec3d p = a + (b - a) * (da / (da - db));
+            out.push_back(p);
+            cut.push_back(p);
+        }
+    }
+    return out;
+}
+
+/** Orders the points of a planar convex cap around their centroid. */
+Polygon orderCap(Polygon cap, const osg::Vec3d& normal)
+{
+    if (cap.size() < 3) return Polygon();
+    osg::Vec3d centre;
+    for (const osg::Vec3d& p : cap) centre += p;
+    centre /= static_cast<double>(cap.size());
+    const osg::Vec3d u = orthogonal(normal);
+    const osg::Vec3d v = normal ^ u;
+    std::sort(cap.begin(), cap.end(), [&](const osg::Vec3d& a, const osg::Vec3d& b) {
+        return std::atan2((a - centre) * v, (a - centre) * u) < std::atan2((b - centre) * v, (b - centre) * u);
+    });
+    return cap;
+}
+
+/** Clips a convex polyhedron, given as its face polygons, by a plane (keeps the positive side). */
+std::vector<Polygon> clipPolyhedron(const std::vector<Polygon>& faces, const osg::Vec4d& plane)
+{
+    std::vector<Polygon> out;
+    Polygon cut;
+    for (const Polygon& f : faces)
+    {
+        Polygon clipped = clipPolygon(f, plane, cut);
+        if (clipped.size() >= 3) out.push_back(std::move(clipped));
+    }
+    Polygon cap = orderCap(cut, osg::Vec3d(plane.x(), plane.y(), plane.z()));
+    if (!cap.empty()) out.push_back(std::move(cap));
+    return out;
+}
+
+osg::Matrixd textureScaleBias()
+{
+    return osg::Matrixd::translate(1.0, 1.0, 1.0) * osg::Matrixd::scale(0.5, 0.5, 0.5);
+}
+
+} // namespace
+
+osg::Vec4d LightDescription::homogeneous() const
+{
+    return type == DIRECTIONAL ? osg::Vec4d(direction, 0.0) : osg::Vec4d(position, 1.0);
+}
+
+bool LightDescription::fromLight(const osg::Light& light, const osg::Matrixd& lightToWorld, LightDescription& out)
+{
+    const osg::Vec4d p(light.getPosition());
+    if (!finite(p)) return false;
+    LightDescription d;
+    d.lightNum = light.getLightNum();
+    if (p.w() == 0.0)
+    {
+        d.type = DIRECTIONAL;
+        d.direction = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), lightToWorld);
+        if (!finite(d.direction) || d.direction.length2() == 0.0) return false;
+        d.direction.normalize();
+    }
+    else
+    {
+        d.position = osg::Vec3d(p.x() / p.w(), p.y() / p.w(), p.z() / p.w()) * lightToWorld;
+        if (!finite(d.position)) return false;
+        const double cutoff = light.getSpotCutoff();
+        const osg::Vec3d axis = osg::Matrixd::transform3x3(osg::Vec3d(light.getDirection()), lightToWorld);
+        d.type = (cutoff < 90.0 && cutoff >= 0.0 && finite(axis) && axis.length2() > 0.0) ? SPOT : POINT;
+        if (d.type == SPOT)
+        {
+            d.spotDirection = axis;
+            d.spotDirection.normalize();
+            d.spotCutoffDeg = cutoff;
+        }
+    }
+    out = d;
+    return true;
+}
+
+osg::Matrixd LightFrustum::worldToTexture() const
+{
+    return view * projection * textureScaleBias();
+}
+
+std::array<osg::Vec3d, 8> frustumCorners(const osg::Matrixd& view, const osg::Matrixd& projection)
+{
+    const osg::Matrixd inv = osg::Matrixd::inverse(view * projection);
+    const double xs[4] = {-1, 1, 1, -1};
+    const double ys[4] = {-1, -1, 1, 1};
+    std::array<osg::Vec3d, 8> c;
+    for (int i = 0; i < 8; ++i) c[i] = osg::Vec3d(xs[i % 4], ys[i % 4], i < 4 ? -1.0 : 1.0) * inv;
+    return c;
+}
+
+osg::Matrixd withDepthRange(const osg::Matrixd& projection, double zNear, double zFar)
+{
+    osg::Matrixd p = projection;
+    const bool ortho = projection(3, 3) == 1.0 && projection(2, 3) == 0.0;
+    if (ortho)
+    {
+        p(2, 2) = -2.0 / (zFar - zNear);
+        p(3, 2) = -(zFar + zNear) / (zFar - zNear);
+    }
+    else
+    {
+        p(2, 2) = -(zFar + zNear) / (zFar - zNear);
+        p(3, 2) = -2.0 * zFar * zNear / (zFar - zNear);
+    }
+    return p;
+}
+
+std::vector<osg::Vec3d> visibleRegion(const std::array<osg::Vec3d, 8>& c, const osg::BoundingBoxd& bounds)
+{
+    if (!bounds.valid()) return {};
+    for (const osg::Vec3d& p : c)
+        if (!finite(p)) return {};
+    std::vector<Polygon> faces = {
+        {c[0], c[1], c[2], c[3]}, {c[4], c[5], c[6], c[7]}, {c[0], c[1], c[5], c[4]},
+        {c[1], c[2], c[6], c[5]}, {c[2], c[3], c[7], c[6]}, {c[3], c[0], c[4], c[7]},
+    };
+    const osg::Vec4d planes[6] = {
+        {1, 0, 0, -bounds.xMin()}, {-1, 0, 0, bounds.xMax()}, {0, 1, 0, -bounds.yMin()},
+        {0, -1, 0, bounds.yMax()}, {0, 0, 1, -bounds.zMin()}, {0, 0, -1, bounds.zMax()},
+    };
+    for (const osg::Vec4d& plane : planes)
+    {
+        faces = clipPolyhedron(faces, plane);
+        if (faces.empty()) return {};
+    }
+    std::vector<osg::Vec3d> points;
+    for (const Polygon& f : faces) points.insert(points.end(), f.begin(), f.end());
+    return points;
+}
+
+LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vector<osg::Vec3d>& region,
+                                   const osg::BoundingBoxd& casters, unsigned int mapSize)
+{
+    LightFrustum f;
+    if (region.empty() || !casters.valid() || !finite(towardLight) || towardLight.length2() == 0.0) return f;
+    osg::Vec3d d = towardLight;
+    d.normalize();
+    // A view fixed in world space (eye at the origin) keeps texel positions stable.
+    f.view = osg::Matrixd::lookAt(osg::Vec3d(), -d, orthogonal(d));
+
+    Range rx, ry, rDepth, cx, cy, cDepth;
+    for (const osg::Vec3d& p : region)
+    {
+        const osg::Vec3d q = p * f.view;
+        rx.expand(q.x()), ry.expand(q.y()), rDepth.expand(-q.z());
+    }
+    for (const osg::Vec3d& p : boxCorners(casters))
+    {
+        const osg::Vec3d q = p * f.view;
+        cx.expand(q.x()), cy.expand(q.y()), cDepth.expand(-q.z());
+    }
+    Range x{std::max(rx.lo, cx.lo), std::min(rx.hi, cx.hi)};
+    Range y{std::max(ry.lo, cy.lo), std::min(ry.hi, cy.hi)};
+    if (x.empty() || y.empty() || cDepth.lo > rDepth.hi) return f;
+
+    // Snap to whole texels of a map one texel larger than needed.
+    const double n = std::max(1u, mapSize);
+    const double extent = std::max(x.hi - x.lo, y.hi - y.lo);
+    const double texel = std::max(extent, 1e-12 * (1.0 + std::fabs(x.lo) + std::fabs(y.lo))) / std::max(1.0, n - 1.0);
+    x.lo = std::floor(x.lo / texel) * texel;
+    y.lo = std::floor(y.lo / texel) * texel;
+    x.hi = x.lo + texel * n;
+    y.hi = y.lo + texel * n;
+
+    const double zNear = cDepth.lo;
+    const double zFar = rDepth.hi;
+    const double margin = 1e-3 * (zFar - zNear) + 1e-9 * (std::fabs(zNear) + std::fabs(zFar));
+    f.projection = osg::Matrixd::ortho(x.lo, x.hi, y.lo, y.hi, zNear - margin, zFar + margin);
+    f.perspective = false;
+    f.valid = true;
+    return f;
+}
+
+LightFrustum fitPerspectiveFrustum(const LightDescription& light, const std::vector<osg::Vec3d>& region,
+                                   const osg::BoundingBoxd& casters, double maxFovDeg)
+{
+    LightFrustum f;
+    if (region.empty() || !casters.valid() || !finite(light.position)) return f;
+    osg::Vec3d axis = light.spotDirection;
+    if (light.type != LightDescription::SPOT)
+    {
+        osg::Vec3d centre;
+        for (const osg::Vec3d& p : region) centre += p;
+        axis = centre / static_cast<double>(region.size()) - light.position;
+    }
+    if (!finite(axis) || axis.length2() == 0.0) return f;
+    axis.normalize();
+    f.view = osg::Matrixd::lookAt(light.position, light.position + axis, orthogonal(axis));
+
+    double maxHalf = osg::DegreesToRadians(maxFovDeg * 0.5);
+    if (light.type == LightDescription::SPOT) maxHalf = std::min(maxHalf, osg::DegreesToRadians(light.spotCutoffDeg) * 1.02);
+    const double maxTan = std::tan(maxHalf);
+
+    double tanHalf = 0.0;
+    Range depth;
+    for (const osg::Vec3d& p : region)
+    {
+        const osg::Vec3d q = p * f.view;
+        const double z = -q.z();
+        depth.expand(z);
+        tanHalf = z > 0.0 ? std::max(tanHalf, std::max(std::fabs(q.x()), std::fabs(q.y())) / z) : maxTan;
+    }
+    if (depth.hi <= 0.0) return f;
+    tanHalf = std::min(tanHalf * 1.01, maxTan);
+
+    Range casterDepth;
+    for (const osg::Vec3d& p : boxCorners(casters)) casterDepth.expand(-(p * f.view).z());
+    const double zFar = depth.hi * 1.01;
+    const double zNear = std::max(std::min(casterDepth.lo, depth.lo) * 0.99, zFar * 1e-4);
+    if (casterDepth.hi <= 0.0 || zNear >= zFar) return f;
+
+    f.projection = osg::Matrixd::perspective(osg::RadiansToDegrees(2.0 * std::atan(tanHalf)), 1.0, zNear, zFar);
+    f.perspective = true;
+    f.valid = true;
+    return f;
+}
+
+} // namespace osgShadowSilhouette

@@ -1,0 +1,29 @@
+// Internal: the shaders embedded at build time, replaceable at run time.
+#ifndef OSGSHADOWSILHOUETTE_SHADERSOURCE_H
+#define OSGSHADOWSILHOUETTE_SHADERSOURCE_H
+
+#include <osg/Shader>
+
+#include <string>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+struct EmbeddedShader
+{
+    const char* name;
+    const char* source;
+};
+
+/** The table generated from the files in shaders/, ended by {nullptr, nullptr}. */
+const EmbeddedShader* embeddedShaders();
+
+/** The shader file `name`: osgShadowSilhouette/shaders/<name> found through OSG_FILE_PATH if
+ *  there is one (so shaders can be edited without rebuilding), else the embedded copy.
+ *  Returns null, with a warning, when neither exists. */
+osg::ref_ptr<osg::Shader> loadShader(osg::Shader::Type type, const std::string& name);
+
+} // namespace detail
+} // namespace osgShadowSilhouette
+
+#endif

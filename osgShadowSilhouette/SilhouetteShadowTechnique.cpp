@@ -1,0 +1,599 @@
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+#include <osgShadowSilhouette/ShaderConstants>
+
+#include "ShaderSource.h"
+
+#include <osg/ColorMask>
+#include <osg/ComputeBoundsVisitor>
+#include <osg/CullFace>
+#include <osg/Image>
+#include <osg/PolygonOffset>
+#include <osgShadow/ShadowedScene>
+#include <osgUtil/CullVisitor>
+#include <osgUtil/RenderStage>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+constexpr unsigned int MAX_MAP_SIZE = 16384;
+
+enum WarningKey
+{
+    WARN_MODE_UNAVAILABLE = 1,
+    WARN_OVER_BUDGET,
+    WARN_NO_LIGHT,
+    WARN_BAD_LIGHT,
+    WARN_MAP_SIZE,
+};
+
+/** Culls the shadowed scene's children from a light-space camera that has no children of its own. */
+class TraverseShadowedSceneCallback : public osg::NodeCallback
+{
+public:
+    explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
+    void operator()(osg::Node*, osg::NodeVisitor* nv) override
+    {
+        if (_scene) _scene->osg::Group::traverse(*nv);
+    }
+
+private:
+    osgShadow::ShadowedScene* _scene;
+};
+
+/** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
+ *  receiver shading samples it. */
+class TagBaseTextureVisitor : public osg::NodeVisitor
+{
+public:
+    TagBaseTextureVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Node& node) override
+    {
+        tag(node.getStateSet());
+        traverse(node);
+    }
+    void apply(osg::Drawable& drawable) override { tag(drawable.getStateSet()); }
+
+private:
+    static void tag(osg::StateSet* ss)
+    {
+        if (!ss) return;
+        const osg::StateAttribute* tex = ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE);
+        if (tex && (ss->getTextureMode(0, GL_TEXTURE_2D) & osg::StateAttribute::ON))
+            ss->setDefine(shader::DEFINE_BASE_TEXTURE);
+    }
+};
+
+osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
+{
+    osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
+    t->setTextureSize(size, size);
+    t->setInternalFormat(GL_DEPTH_COMPONENT24);
+    t->setSourceFormat(GL_DEPTH_COMPONENT);
+    t->setSourceType(GL_FLOAT);
+    t->setShadowComparison(true);
+    t->setShadowCompareFunc(osg::Texture::LEQUAL);
+    t->setShadowTextureMode(osg::Texture::LUMINANCE);
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR); // 2x2 hardware PCF
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER);
+    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
+    t->setBorderColor(osg::Vec4d(1.0, 1.0, 1.0, 1.0)); // outside the map: lit
+    return t;
+}
+
+/** A 1x1 depth texture at the far plane: every lookup is lit. Bound to unused shadow slots. */
+osg::ref_ptr<osg::Texture2D> createLitTexture()
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT);
+    *reinterpret_cast<float*>(image->data()) = 1.0f;
+    osg::ref_ptr<osg::Texture2D> t = createDepthTexture(1);
+    t->setImage(image.get());
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    return t;
+}
+
+osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask)
+{
+    osg::ComputeBoundsVisitor cbv;
+    cbv.setTraversalMask(mask);
+    for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(cbv);
+    const osg::BoundingBox& b = cbv.getBoundingBox();
+    return b.valid() ? osg::BoundingBoxd(b._min, b._max) : osg::BoundingBoxd();
+}
+
+} // namespace
+
+SilhouetteShadowTechnique::SilhouetteShadowTechnique() = default;
+
+SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode)
+{
+    setMode(mode);
+}
+
+SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechnique& copy, const osg::CopyOp& copyop)
+    : osgShadow::ShadowTechnique(copy, copyop),
+      _mode(copy._mode),
+      _shadowMapSize(copy._shadowMapSize),
+      _polygonOffsetFactor(copy._polygonOffsetFactor),
+      _polygonOffsetUnits(copy._polygonOffsetUnits),
+      _lightNum(copy._lightNum),
+      _maxShadowLights(copy._maxShadowLights),
+      _baseTextureUnit(copy._baseTextureUnit),
+      _useDefaultShading(copy._useDefaultShading),
+      _debugView(copy._debugView),
+      _debugLight(copy._debugLight)
+{
+}
+
+SilhouetteShadowTechnique::~SilhouetteShadowTechnique() = default;
+
+// ---------------------------------------------------------------------------------------
+// Properties
+
+bool SilhouetteShadowTechnique::isModeAvailable(Mode mode)
+{
+    return mode == SHADOW_MAP;
+}
+
+const char* SilhouetteShadowTechnique::modeName(Mode mode)
+{
+    switch (mode)
+    {
+    case SHADOW_MAP: return "shadowmap";
+    case SILHOUETTE_MAP: return "silhouette";
+    case HYBRID: return "hybrid";
+    case SHADOW_VOLUME: return "volume";
+    }
+    return "shadowmap";
+}
+
+bool SilhouetteShadowTechnique::modeFromName(const std::string& name, Mode& mode)
+{
+    static const struct { const char* a; const char* b; Mode m; } names[] = {
+        {"shadowmap", "SHADOW_MAP", SHADOW_MAP},
+        {"silhouette", "SILHOUETTE_MAP", SILHOUETTE_MAP},
+        {"hybrid", "HYBRID", HYBRID},
+        {"volume", "SHADOW_VOLUME", SHADOW_VOLUME},
+    };
+    for (const auto& n : names)
+    {
+        if (name == n.a || name == n.b)
+        {
+            mode = n.m;
+            return true;
+        }
+    }
+    return false;
+}
+
+void SilhouetteShadowTechnique::setMode(Mode mode)
+{
+    if (mode < SHADOW_MAP || mode > SHADOW_VOLUME)
+    {
+        OSG_WARN << "osgShadowSilhouette: Mode " << int(mode) << " is not a mode; using SHADOW_MAP" << std::endl;
+        mode = SHADOW_MAP;
+    }
+    _mode = mode;
+}
+
+SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::getEffectiveMode() const
+{
+    return isModeAvailable(_mode) ? _mode : SHADOW_MAP;
+}
+
+void SilhouetteShadowTechnique::setShadowMapSize(unsigned int size)
+{
+    if (size > MAX_MAP_SIZE)
+    {
+        warnOnce(WARN_MAP_SIZE, "ShadowMapSize " + std::to_string(size) + " is larger than " +
+                                    std::to_string(MAX_MAP_SIZE) + "; clamped");
+        size = MAX_MAP_SIZE;
+    }
+    _shadowMapSize = std::max(1u, size);
+}
+
+void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
+{
+    _polygonOffsetFactor = std::isfinite(factor) ? factor : 1.1f;
+    dirty();
+}
+
+void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
+{
+    _polygonOffsetUnits = std::isfinite(units) ? units : 4.0f;
+    dirty();
+}
+
+void SilhouetteShadowTechnique::setLightNum(int lightNum)
+{
+    _lightNum = std::max(-1, lightNum);
+}
+
+void SilhouetteShadowTechnique::setMaxShadowLights(unsigned int count)
+{
+    _maxShadowLights = std::min<unsigned int>(std::max(1u, count), shader::MAX_SHADOW_LIGHTS);
+    dirty();
+}
+
+void SilhouetteShadowTechnique::setBaseTextureUnit(unsigned int unit)
+{
+    _baseTextureUnit = std::max(1u, unit);
+    dirty();
+}
+
+void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
+{
+    _useDefaultShading = flag;
+    dirty();
+}
+
+void SilhouetteShadowTechnique::setDebugView(DebugView view)
+{
+    _debugView = (view == DEBUG_SHADOW_MASK) ? view : DEBUG_NONE;
+}
+
+void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
+{
+    _debugLight = std::min<unsigned int>(index, shader::MAX_SCENE_LIGHTS - 1);
+}
+
+SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
+    return _statistics;
+}
+
+void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
+    if (_warned[key]) return;
+    _warned[key] = true;
+    OSG_WARN << "osgShadowSilhouette: " << message << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------
+// init / update / cleanup
+
+void SilhouetteShadowTechnique::init()
+{
+    if (!_shadowedScene) return;
+
+    _shadowFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SHADOW_FRAG);
+    _receiverProgram = new osg::Program;
+    _receiverProgram->setName("osgShadowSilhouette receiver");
+    _receiverProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
+    _receiverProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_RECEIVER_FRAG));
+    _receiverProgram->addShader(_shadowFragmentShader.get());
+
+    _depthPassStateSet = createDepthPassStateSet();
+    _litDummyTexture = createLitTexture();
+
+    TagBaseTextureVisitor tagger;
+    for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
+
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+        _viewDataMap.clear(); // rebuilt with the new settings on the next cull
+    }
+    _dirty = false;
+}
+
+osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet() const
+{
+    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName("osgShadowSilhouette depth");
+    program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
+    program->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
+    ss->setAttributeAndModes(program.get(), overrideOn);
+    ss->setAttributeAndModes(new osg::PolygonOffset(_polygonOffsetFactor, _polygonOffsetUnits), overrideOn);
+    ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
+    ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE); // open casters too
+    ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    return ss;
+}
+
+void SilhouetteShadowTechnique::update(osg::NodeVisitor& nv)
+{
+    if (_shadowedScene) _shadowedScene->osg::Group::traverse(nv);
+}
+
+void SilhouetteShadowTechnique::cleanSceneGraph()
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    _viewDataMap.clear();
+}
+
+void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
+    if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
+    if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
+    for (auto& entry : _viewDataMap)
+    {
+        ViewData& vd = *entry.second;
+        vd.receiverStateSet->resizeGLObjectBuffers(maxSize);
+        for (LightPass& pass : vd.passes)
+        {
+            if (pass.depthCamera) pass.depthCamera->resizeGLObjectBuffers(maxSize);
+            if (pass.depthTexture) pass.depthTexture->resizeGLObjectBuffers(maxSize);
+        }
+    }
+}
+
+void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
+    if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
+    if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
+    for (const auto& entry : _viewDataMap)
+    {
+        const ViewData& vd = *entry.second;
+        vd.receiverStateSet->releaseGLObjects(state);
+        for (const LightPass& pass : vd.passes)
+        {
+            if (pass.depthCamera) pass.depthCamera->releaseGLObjects(state);
+            if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Per-view data
+
+SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::getViewData(osgUtil::CullVisitor& cv)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    osg::ref_ptr<ViewData>& vd = _viewDataMap[&cv];
+    if (!vd) vd = createViewData();
+    return vd.get();
+}
+
+SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
+{
+    osg::ref_ptr<ViewData> vd = new ViewData;
+    osg::StateSet* ss = new osg::StateSet;
+    vd->receiverStateSet = ss;
+    if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
+    ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
+
+    vd->numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
+    vd->lightIndex = new osg::Uniform(osg::Uniform::INT, shader::LIGHT_INDEX, shader::MAX_SCENE_LIGHTS);
+    vd->shadowSlot = new osg::Uniform(osg::Uniform::INT, shader::SHADOW_SLOT, shader::MAX_SCENE_LIGHTS);
+    vd->eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, _maxShadowLights);
+    vd->maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
+    osg::ref_ptr<osg::Uniform> samplers =
+        new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, _maxShadowLights);
+    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+    {
+        samplers->setElement(slot, int(_baseTextureUnit + slot));
+        vd->eyeToShadow->setElement(slot, osg::Matrixf());
+        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), osg::StateAttribute::ON);
+    }
+    for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
+    {
+        vd->lightIndex->setElement(i, i);
+        vd->shadowSlot->setElement(i, -1);
+    }
+    for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
+                            vd->maskLight.get(), samplers.get()})
+        ss->addUniform(u);
+    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
+    ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
+    vd->passes.resize(_maxShadowLights);
+    return vd.release();
+}
+
+SilhouetteShadowTechnique::LightPass SilhouetteShadowTechnique::createLightPass(unsigned int slot) const
+{
+    LightPass pass;
+    pass.depthTexture = createDepthTexture(_shadowMapSize);
+    osg::ref_ptr<osg::Camera> camera = new osg::Camera;
+    camera->setName("osgShadowSilhouette depth pass " + std::to_string(slot));
+    camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    camera->setRenderOrder(osg::Camera::PRE_RENDER);
+    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    camera->setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
+    camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
+    camera->setClearMask(GL_DEPTH_BUFFER_BIT);
+    camera->setViewport(0, 0, _shadowMapSize, _shadowMapSize);
+    camera->setDrawBuffer(GL_NONE);
+    camera->setReadBuffer(GL_NONE);
+    camera->attach(osg::Camera::DEPTH_BUFFER, pass.depthTexture.get());
+    camera->setStateSet(_depthPassStateSet.get());
+    camera->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+    pass.depthCamera = camera;
+    return pass;
+}
+
+// ---------------------------------------------------------------------------------------
+// Cull
+
+void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
+{
+    if (_dirty || !_receiverProgram)
+    {
+        _shadowedScene->osg::Group::traverse(cv); // init() has not run yet (it runs in update)
+        return;
+    }
+    if (!isModeAvailable(_mode))
+        warnOnce(WARN_MODE_UNAVAILABLE, std::string("Mode ") + modeName(_mode) +
+                                            " is not available in this version; rendering SHADOW_MAP");
+
+    ViewData& vd = *getViewData(cv);
+    cullReceivers(cv, vd);
+
+    const std::vector<FoundLight> lights = collectLights(cv);
+    std::vector<int> slots(lights.size(), -1);
+    Statistics stats;
+    stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
+    stats.lightsFound = static_cast<unsigned int>(lights.size());
+    stats.effectiveMode = getEffectiveMode();
+
+    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
+    osg::BoundingBoxd receivers, casters;
+    if (!lights.empty())
+    {
+        receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
+        casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
+    }
+    const std::vector<osg::Vec3d> region = visibleReceiverRegion(cv, receivers);
+
+    unsigned int slot = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+    {
+        if (_lightNum >= 0 && lights[i].description.lightNum != _lightNum) continue;
+        if (slot >= _maxShadowLights)
+        {
+            warnOnce(WARN_OVER_BUDGET, "more shadow-casting lights than MaxShadowLights (" +
+                                           std::to_string(_maxShadowLights) + "); the rest are lit unshadowed");
+            break;
+        }
+        LightPass& pass = vd.passes[slot];
+        if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize))
+            pass = createLightPass(slot);
+        pass.frustum = fitLightFrustum(lights[i].description, region, casters);
+        osg::Texture2D* texture = _litDummyTexture.get();
+        if (pass.frustum.valid)
+        {
+            cullDepthPass(cv, pass);
+            texture = pass.depthTexture.get();
+            ++stats.shadowPasses;
+        }
+        else
+            ++stats.lightsSkipped;
+        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, texture, osg::StateAttribute::ON);
+        slots[i] = static_cast<int>(slot++);
+    }
+    for (; slot < _maxShadowLights; ++slot)
+        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(),
+                                                         osg::StateAttribute::ON);
+    stats.lightsShadowed = static_cast<unsigned int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
+    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
+
+    updateViewUniforms(cv, vd, lights, slots);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
+    _statistics = stats;
+}
+
+void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd)
+{
+    const unsigned int mask = cv.getTraversalMask();
+    cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getReceivesShadowTraversalMask());
+    if (_debugView == DEBUG_SHADOW_MASK)
+        vd.receiverStateSet->setDefine(shader::DEFINE_DEBUG_MASK);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_DEBUG_MASK);
+    cv.pushStateSet(vd.receiverStateSet.get());
+    _shadowedScene->osg::Group::traverse(cv);
+    cv.popStateSet();
+    cv.setTraversalMask(mask);
+}
+
+std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::collectLights(
+    osgUtil::CullVisitor& cv) const
+{
+    std::vector<FoundLight> lights;
+    osgUtil::RenderStage* stage = cv.getCurrentRenderBin()->getStage();
+    osgUtil::PositionalStateContainer* psc = stage ? stage->getPositionalStateContainer() : nullptr;
+    if (!psc) return lights;
+
+    // Light positions are stored with the model-view matrix at their LightSource (null:
+    // already in eye coordinates); "world" here is the ShadowedScene's own frame.
+    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
+    for (const auto& attrMatrix : psc->getAttrMatrixList())
+    {
+        const osg::Light* light = dynamic_cast<const osg::Light*>(attrMatrix.first.get());
+        if (!light) continue;
+        const osg::Matrixd lightToWorld =
+            attrMatrix.second.valid() ? osg::Matrixd(*attrMatrix.second) * eyeToWorld : eyeToWorld;
+        FoundLight found;
+        found.light = light;
+        if (!LightDescription::fromLight(*light, lightToWorld, found.description))
+        {
+            warnOnce(WARN_BAD_LIGHT, "light " + std::to_string(light->getLightNum()) +
+                                         " has a non-finite position or direction; it casts no shadow");
+            continue;
+        }
+        const bool seen = std::any_of(lights.begin(), lights.end(), [&](const FoundLight& l) {
+            return l.description.lightNum == found.description.lightNum;
+        });
+        if (!seen && light->getLightNum() < shader::MAX_SCENE_LIGHTS) lights.push_back(found);
+    }
+    std::sort(lights.begin(), lights.end(), [](const FoundLight& a, const FoundLight& b) {
+        return a.description.lightNum < b.description.lightNum;
+    });
+    return lights;
+}
+
+std::vector<osg::Vec3d> SilhouetteShadowTechnique::visibleReceiverRegion(osgUtil::CullVisitor& cv,
+                                                                          const osg::BoundingBoxd& receivers) const
+{
+    if (!receivers.valid()) return {};
+    double zNear = cv.getCalculatedNearPlane();
+    double zFar = cv.getCalculatedFarPlane();
+    const osg::Matrixd& projection = *cv.getProjectionMatrix();
+    if (cv.getComputeNearFarMode() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR)
+    {
+        const std::array<osg::Vec3d, 8> c = frustumCorners(osg::Matrixd(), projection);
+        zNear = -c[0].z(), zFar = -c[4].z();
+    }
+    if (!(zNear <= zFar) || !std::isfinite(zNear) || !std::isfinite(zFar)) return {}; // nothing visible
+    zNear = std::max(zNear, zFar * 1e-6);
+    const double margin = 1e-3 * (zFar - zNear) + 1e-6 * zFar;
+    const osg::Matrixd fitted = withDepthRange(projection, std::max(zNear - margin, zNear * 0.5), zFar + margin);
+    return visibleRegion(frustumCorners(*cv.getModelViewMatrix(), fitted), receivers);
+}
+
+LightFrustum SilhouetteShadowTechnique::fitLightFrustum(const LightDescription& light,
+                                                        const std::vector<osg::Vec3d>& region,
+                                                        const osg::BoundingBoxd& casters) const
+{
+    if (light.type == LightDescription::DIRECTIONAL)
+        return fitDirectionalFrustum(light.direction, region, casters, _shadowMapSize);
+    return fitPerspectiveFrustum(light, region, casters);
+}
+
+void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPass& pass)
+{
+    pass.depthCamera->setViewMatrix(pass.frustum.view);
+    pass.depthCamera->setProjectionMatrix(pass.frustum.projection);
+    const unsigned int mask = cv.getTraversalMask();
+    cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
+    pass.depthCamera->accept(cv);
+    cv.setTraversalMask(mask);
+}
+
+void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd,
+                                                   const std::vector<FoundLight>& lights,
+                                                   const std::vector<int>& slots)
+{
+    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
+    const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
+    vd.numLights->set(n);
+    for (int i = 0; i < n; ++i)
+    {
+        vd.lightIndex->setElement(i, lights[i].description.lightNum);
+        vd.shadowSlot->setElement(i, slots[i]);
+        if (slots[i] >= 0)
+        {
+            const osg::Matrixd eyeToTexture = eyeToWorld * vd.passes[slots[i]].frustum.worldToTexture();
+            vd.eyeToShadow->setElement(slots[i], osg::Matrixf(eyeToTexture));
+        }
+    }
+    vd.maskLight->set(static_cast<int>(_debugLight));
+}
+
+} // namespace osgShadowSilhouette

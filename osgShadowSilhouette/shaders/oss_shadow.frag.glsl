@@ -1,0 +1,47 @@
+#version 400 compatibility
+// osgShadowSilhouette: the shadow term of each shadowed light.
+//
+// Shadow map with 2x2 hardware percentage-closer filtering (Reeves, Salesin, Cook 1987):
+// the depth texture compares with GL_LEQUAL and filters linearly, so one lookup returns the
+// share of the four nearest depth samples that see the fragment.
+//
+// Applications link this shader into their own programs and call oss_shadowTerm().
+// Names are kept in sync with osgShadowSilhouette/ShaderConstants.
+
+#pragma import_defines(OSS_MAX_SHADOW_LIGHTS)
+#ifndef OSS_MAX_SHADOW_LIGHTS
+#define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#define OSS_MAX_SCENE_LIGHTS 8
+
+uniform int oss_numLights;                          // lights lit by the receiver shading
+uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
+uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 unshadowed
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];// eye space -> light texture space [0,1]^3
+uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+
+// 2x2 PCF of shadow slot `slot` at an eye-space position: 1 lit, 0 shadowed, between at edges.
+float oss_shadowSlotTerm(int slot, vec4 eyePosition)
+{
+    vec4 c = oss_eyeToShadow[slot] * eyePosition;
+    if (c.w <= 0.0)
+        return 1.0; // behind a perspective light: outside its map
+    return textureProj(oss_shadowMap[slot], c);
+}
+
+// The shadow slot of GL light `light`, or -1 when it casts no shadow.
+int oss_shadowSlotOf(int light)
+{
+    for (int k = 0; k < oss_numLights; ++k)
+        if (oss_lightIndex[k] == light)
+            return oss_shadowSlot[k];
+    return -1;
+}
+
+// The shadow term of GL light `light` (gl_LightSource index) at an eye-space position:
+// 1 where the light reaches the point, 0 where it is blocked; unshadowed lights give 1.
+float oss_shadowTerm(int light, vec4 eyePosition)
+{
+    int slot = oss_shadowSlotOf(light);
+    return slot < 0 ? 1.0 : oss_shadowSlotTerm(slot, eyePosition);
+}
