@@ -1,0 +1,800 @@
+// The exact reference (tests/reference): hand-derived masks on scenes whose shadows can be
+// computed on paper, the mask comparison of MEASURE.md, and the mask image conventions.
+//
+// Most scenes are seen by one camera: eye (0, 0, 1000) looking straight down, up +y,
+// 300 x 300 pixels, tan(fovy/2) = 0.015. At z = 0 the image spans [-15, 15]^2, one pixel
+// is 0.1 x 0.1, pixel (i, j) (GL window coordinates) sees the ground point
+// (-15 + 0.1 (i + 0.5), -15 + 0.1 (j + 0.5)). The ground quad [-10, 10]^2 covers
+// 200 x 200 = 40000 pixels; the other 90000 - 40000 = 50000 are background. A point at
+// height z projects 1000 / (1000 - z) times farther from the centre than at z = 0.
+#include "reference/Reference.h"
+
+#include <gtest/gtest.h>
+
+#include <osg/Geode>
+#include <osg/Geometry>
+#include <osg/Group>
+#include <osg/MatrixTransform>
+#include <osg/Shape>
+#include <osg/ShapeDrawable>
+#include <osg/Viewport>
+#include <osgDB/ReadFile>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+
+namespace {
+
+using ossref::Camera;
+using ossref::Comparison;
+using ossref::Light;
+using ossref::Mask;
+
+const int kSize = 300;
+const long long kGround = 40000;
+const long long kBackground = 50000;
+
+Camera topCamera()
+{
+    Camera c;
+    c.eye = osg::Vec3d(0.0, 0.0, 1000.0);
+    c.center = osg::Vec3d(0.0, 0.0, 0.0);
+    c.up = osg::Vec3d(0.0, 1.0, 0.0);
+    c.fovyDeg = osg::RadiansToDegrees(2.0 * std::atan(0.015));
+    c.width = kSize;
+    c.height = kSize;
+    return c;
+}
+
+/** The pixel column (or row, GL) whose centre sees world coordinate w on the ground. */
+int pixelOf(double w) { return int(std::floor((w + 15.0) / 0.1)); }
+
+/** Mask value at the pixel that sees ground point (x, y). */
+uint8_t ground(const Mask& m, double x, double y) { return m.atGL(pixelOf(x), pixelOf(y)); }
+
+/** Pixel centres (one axis) whose ground coordinate lies strictly inside (lo, hi). */
+long long centresInside(double lo, double hi)
+{
+    long long n = 0;
+    for (int i = 0; i < kSize; ++i)
+    {
+        const double c = -15.0 + 0.1 * (i + 0.5);
+        n += (c > lo && c < hi) ? 1 : 0;
+    }
+    return n;
+}
+
+osg::ref_ptr<osg::Geometry> quad(double x0, double x1, double y0, double y1, double z)
+{
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(x0, y0, z));
+    v->push_back(osg::Vec3(x1, y0, z));
+    v->push_back(osg::Vec3(x1, y1, z));
+    v->push_back(osg::Vec3(x0, y1, z));
+    g->setVertexArray(v.get());
+    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    return g;
+}
+
+osg::ref_ptr<osg::Geode> geode(osg::Drawable* d, unsigned int mask = ~0u)
+{
+    osg::ref_ptr<osg::Geode> g = new osg::Geode;
+    g->addDrawable(d);
+    g->setNodeMask(mask);
+    return g;
+}
+
+enum class Occluder { None, Quad, Box, QuadUnderTransform };
+
+/** Ground [-10, 10]^2 at z = 0 plus an occluder whose top is the square [-1, 1]^2 at z = 4
+ *  (Box: the box [-1, 1]^2 x [3, 4]; QuadUnderTransform: the quad at z = 0 moved up by a
+ *  MatrixTransform). The occluder's node mask is `occluderMask`. */
+osg::ref_ptr<osg::Group> groundScene(Occluder occluder, unsigned int occluderMask = ~0u)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+    switch (occluder)
+    {
+    case Occluder::None: break;
+    case Occluder::Quad: root->addChild(geode(quad(-1, 1, -1, 1, 4).get(), occluderMask)); break;
+    case Occluder::Box:
+        root->addChild(geode(new osg::ShapeDrawable(new osg::Box(osg::Vec3(0, 0, 3.5f), 2, 2, 1)), occluderMask));
+        break;
+    case Occluder::QuadUnderTransform:
+    {
+        osg::ref_ptr<osg::MatrixTransform> t = new osg::MatrixTransform(osg::Matrixd::translate(0, 0, 4));
+        t->addChild(geode(quad(-1, 1, -1, 1, 0).get()));
+        t->setNodeMask(occluderMask);
+        root->addChild(t.get());
+        break;
+    }
+    }
+    return root;
+}
+
+Light directional(const osg::Vec3d& towardLight)
+{
+    Light l;
+    l.type = Light::DIRECTIONAL;
+    l.vector = towardLight;
+    return l;
+}
+
+Light pointLight(const osg::Vec3d& position)
+{
+    Light l;
+    l.type = Light::POINT;
+    l.vector = position;
+    return l;
+}
+
+long long grazingCount(const Mask& m)
+{
+    long long n = 0;
+    for (uint8_t g : m.grazing) n += g;
+    return n;
+}
+
+Mask maskFromRows(int width, const std::vector<std::vector<int>>& rows)
+{
+    Mask m = Mask::filled(width, int(rows.size()));
+    for (size_t r = 0; r < rows.size(); ++r)
+        for (int x = 0; x < width; ++x) m.value[r * width + x] = uint8_t(rows[r][x]);
+    return m;
+}
+
+std::string tempPath(const std::string& name)
+{
+    return (testing::TempDir().empty() ? std::string("/tmp/") : testing::TempDir()) + name;
+}
+
+// ---------------------------------------------------------------------------------------
+// Camera convention
+
+TEST(ReferenceCamera, PrimaryRaysMatchOsgUnprojection)
+{
+    Camera c;
+    c.eye = osg::Vec3d(3, -7, 5);
+    c.center = osg::Vec3d(0.5, 1, 0);
+    c.up = osg::Vec3d(0, 0, 1);
+    c.fovyDeg = 40;
+    c.width = 640;
+    c.height = 360;
+    const osg::Matrixd toWindow = osg::Matrixd::lookAt(c.eye, c.center, c.up) *
+                                  osg::Matrixd::perspective(c.fovyDeg, 640.0 / 360.0, 1.0, 100.0) *
+                                  osg::ref_ptr<osg::Viewport>(new osg::Viewport(0, 0, 640, 360))->computeWindowMatrix();
+    const osg::Matrixd fromWindow = osg::Matrixd::inverse(toWindow);
+    for (const osg::Vec2d& w : {osg::Vec2d(0.5, 0.5), osg::Vec2d(639.5, 0.5), osg::Vec2d(320, 180), osg::Vec2d(17.5, 300.5)})
+    {
+        osg::Vec3d expected = osg::Vec3d(w.x(), w.y(), 1.0) * fromWindow - osg::Vec3d(w.x(), w.y(), 0.0) * fromWindow;
+        expected.normalize();
+        osg::Vec3d origin, dir;
+        ossref::primaryRay(c, w.x(), w.y(), origin, dir);
+        EXPECT_NEAR((origin - c.eye).length(), 0.0, 1e-9);
+        EXPECT_NEAR((dir - expected).length(), 0.0, 1e-9) << "window point " << w.x() << ", " << w.y();
+    }
+}
+
+TEST(ReferenceCamera, TopCameraSeesPixelCentresOnTheGround)
+{
+    osg::Vec3d origin, dir;
+    ossref::primaryRay(topCamera(), 0.5, 299.5, origin, dir);
+    const osg::Vec3d hit = origin + dir * (-origin.z() / dir.z());
+    EXPECT_NEAR(hit.x(), -14.95, 1e-9);  // left column
+    EXPECT_NEAR(hit.y(), 14.95, 1e-9);   // top row
+}
+
+// ---------------------------------------------------------------------------------------
+// Directional lights: shadows on the ground
+
+struct DirectionalCase
+{
+    const char* name;
+    Occluder occluder;
+    osg::Vec3d towardLight;
+    long long shadowPixels;  // derived in the comment of each row
+    osg::Vec2d shadowCentre; // a ground point inside the shadow
+};
+
+// Occluder top [-1, 1]^2 at z = 4 seen as 20 x 20 pixels (|x| <= 0.95 * 1000/996 < 1).
+const DirectionalCase kDirectionalCases[] = {
+    // Light toward +x at 45 degrees: top edges x = -1, 1 land at x = -5, -3: 20 x 20 pixels.
+    {"QuadTiltedX", Occluder::Quad, {1, 0, 1}, 400, {-4, 0}},
+    // Toward +y: the shadow is at y in [-5, -3], i.e. in the lower part of the image.
+    {"QuadTiltedY", Occluder::Quad, {0, 1, 1}, 400, {0, -4}},
+    // Same quad built at z = 0 under a translate(0, 0, 4).
+    {"QuadUnderTransform", Occluder::QuadUnderTransform, {1, 0, 1}, 400, {-4, 0}},
+    // Box [-1,1]^2 x [3,4]: shadow x in [-5, -2] (bottom edge x = 1, z = 3 -> -2): 30 x 20.
+    {"BoxTiltedX", Occluder::Box, {1, 0, 1}, 600, {-3.5, 0}},
+    // Light straight up: the shadow [-1,1]^2 lies under the occluder, which perspective
+    // enlarges by 1000/996: no shadow pixel is visible.
+    {"QuadStraightUp", Occluder::Quad, {0, 0, 1}, 0, {0, 0}},
+};
+
+void PrintTo(const DirectionalCase& c, std::ostream* os) { *os << c.name; }
+
+class DirectionalShadow : public testing::TestWithParam<DirectionalCase>
+{
+};
+
+TEST_P(DirectionalShadow, CountsAndPixels)
+{
+    const DirectionalCase& c = GetParam();
+    const Mask m = ossref::computeReferenceMask(*groundScene(c.occluder), topCamera(), directional(c.towardLight));
+    ASSERT_EQ(m.width, kSize);
+    ASSERT_EQ(m.height, kSize);
+    EXPECT_EQ(m.count(0), c.shadowPixels);
+    EXPECT_EQ(m.count(255), kGround - c.shadowPixels);
+    EXPECT_EQ(m.count(128), kBackground);
+    EXPECT_EQ(grazingCount(m), 0);
+    if (c.shadowPixels > 0)
+    {
+        EXPECT_EQ(ground(m, c.shadowCentre.x(), c.shadowCentre.y()), 0);
+    }
+    EXPECT_EQ(ground(m, 0, 0), 255);      // occluder top, lit
+    EXPECT_EQ(ground(m, 8, 8), 255);      // open ground
+    EXPECT_EQ(ground(m, 14, 14), 128);    // beyond the ground
+    EXPECT_EQ(ground(m, -12, 0), 128);
+}
+
+INSTANTIATE_TEST_SUITE_P(Reference, DirectionalShadow, testing::ValuesIn(kDirectionalCases),
+                         [](const testing::TestParamInfo<DirectionalCase>& info) { return info.param.name; });
+
+TEST(ReferenceDirectional, ShadowFootprintFollowsFromTheCamera)
+{
+    // QuadTiltedX again, counted from the camera model instead of by hand.
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), directional({1, 0, 1}));
+    EXPECT_EQ(m.count(0), centresInside(-5, -3) * centresInside(-1, 1));
+    EXPECT_EQ(ground(m, -5.05, 0), 255);
+    EXPECT_EQ(ground(m, -4.95, 0), 0);
+    EXPECT_EQ(ground(m, -3.05, 0), 0);
+    EXPECT_EQ(ground(m, -2.95, 0), 255);
+    EXPECT_EQ(ground(m, -4, 1.05), 255);
+}
+
+TEST(ReferenceDirectional, WindingDoesNotMatter)
+{
+    // The same scene with every triangle wound clockwise seen from above: the normal is
+    // flipped toward the camera, so nothing changes.
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(quad(10, -10, -10, 10, 0).get()));
+    root->addChild(geode(quad(1, -1, -1, 1, 4).get()));
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({1, 0, 1}));
+    EXPECT_EQ(m.count(0), 400);
+    EXPECT_EQ(m.count(255), kGround - 400);
+    EXPECT_EQ(grazingCount(m), 0);
+}
+
+TEST(ReferenceDirectional, LightBelowTheGroundLightsNothing)
+{
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), directional({0, 0, -1}));
+    EXPECT_EQ(m.count(0), kGround);
+    EXPECT_EQ(m.count(255), 0);
+    EXPECT_EQ(m.count(128), kBackground);
+}
+
+struct MaskCase
+{
+    const char* name;
+    unsigned int occluderMask;
+    unsigned int castsMask;
+    unsigned int traversalMask;
+    long long shadowPixels;
+    uint8_t occluderPixel;  // what the pixel at the ground centre shows
+};
+
+// The occluder of QuadTiltedX under different node masks.
+const MaskCase kMaskCases[] = {
+    {"AllMasks", 0x1u, ~0u, ~0u, 400, 255},
+    {"OccluderDoesNotCast", 0x1u, 0x2u, ~0u, 0, 255},      // visible, casts nothing
+    {"OccluderInvisible", 0x1u, ~0u, ~0x1u, 0, 255},       // the ground under it is seen, lit
+    {"OccluderCastsByItsBit", 0x3u, 0x2u, ~0u, 400, 255},
+    // 0x3 passes the traversal mask 0x1 and the casts mask 0x2, but not both at once:
+    // osgShadow's casts pass traverses with (traversal & casts) = 0.
+    {"CastsAndTraversalCombined", 0x3u, 0x2u, 0x1u, 0, 255},
+};
+
+void PrintTo(const MaskCase& c, std::ostream* os) { *os << c.name; }
+
+class NodeMasks : public testing::TestWithParam<MaskCase>
+{
+};
+
+TEST_P(NodeMasks, DecideWhatIsSeenAndWhatCasts)
+{
+    const MaskCase& c = GetParam();
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad, c.occluderMask), topCamera(),
+                                                directional({1, 0, 1}), c.castsMask, c.traversalMask);
+    EXPECT_EQ(m.count(0), c.shadowPixels);
+    EXPECT_EQ(m.count(255), kGround - c.shadowPixels);
+    EXPECT_EQ(ground(m, 0, 0), c.occluderPixel);
+}
+
+INSTANTIATE_TEST_SUITE_P(Reference, NodeMasks, testing::ValuesIn(kMaskCases),
+                         [](const testing::TestParamInfo<MaskCase>& info) { return info.param.name; });
+
+TEST(ReferenceDirectional, CastsMaskCountsTrianglesThatCast)
+{
+    const ossref::TriangleSoup soup = ossref::collectTriangles(*groundScene(Occluder::Quad, 0x1u), 0x2u);
+    ASSERT_EQ(soup.size(), 4u);  // two quads, two triangles each
+    EXPECT_EQ(soup.casts[0] + soup.casts[1], 2);  // the ground
+    EXPECT_EQ(soup.casts[2] + soup.casts[3], 0);  // the occluder
+}
+
+// ---------------------------------------------------------------------------------------
+// Point and spot lights
+
+TEST(ReferencePoint, LightBetweenOccluderAndGround)
+{
+    // Light at z = 2 under the occluder (z = 4): the ground is all lit, the occluder's top
+    // faces the camera and away from the light.
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), pointLight({0, 0, 2}));
+    EXPECT_EQ(m.count(0), 400);
+    EXPECT_EQ(m.count(255), kGround - 400);
+    EXPECT_EQ(ground(m, 0, 0), 0);
+    EXPECT_EQ(ground(m, 5, 0), 255);
+}
+
+TEST(ReferencePoint, LightAboveOccluderCastsAnEnlargedShadow)
+{
+    // Light at z = 8: the top [-1,1]^2 at z = 4 shadows [-2,2]^2 (scale 8/4), of which the
+    // inner 20 x 20 pixels show the occluder: 40 * 40 - 20 * 20 = 1200 shadow pixels.
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), pointLight({0, 0, 8}));
+    EXPECT_EQ(m.count(0), 1200);
+    EXPECT_EQ(ground(m, 0, 0), 255);
+    EXPECT_EQ(ground(m, 1.5, 0), 0);
+    EXPECT_EQ(ground(m, -1.95, -1.95), 0);
+    EXPECT_EQ(ground(m, 1.95, 0), 0);   // to the light: x = 0.975 at z = 4, inside
+    EXPECT_EQ(ground(m, 2.05, 0), 255); // x = 1.025 at z = 4, outside
+}
+
+TEST(ReferenceSpot, ConeLimitsTheLitRegion)
+{
+    // Spot at z = 8 pointing down with a 30 degree cutoff: the cone meets the ground in a
+    // disc of radius 8 tan(30) = 4.6188; the occluder's shadow is still [-2, 2]^2.
+    Light spot = pointLight({0, 0, 8});
+    spot.type = Light::SPOT;
+    spot.spotDirection = osg::Vec3d(0, 0, -1);
+    spot.spotCutoffDeg = 30.0;
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), spot);
+
+    EXPECT_EQ(ground(m, 0, 0), 255);    // occluder top, on the axis
+    EXPECT_EQ(ground(m, 1.5, 0), 0);    // shadow
+    EXPECT_EQ(ground(m, 3, 0), 255);    // 20.6 degrees off axis
+    EXPECT_EQ(ground(m, 3, 3), 255);    // 27.9 degrees
+    EXPECT_EQ(ground(m, 4, 3), 0);      // 32.0 degrees: outside
+    EXPECT_EQ(ground(m, 6, 0), 0);      // 36.9 degrees
+    EXPECT_EQ(ground(m, 9, 9), 0);
+
+    const double radius = 8.0 * std::tan(osg::DegreesToRadians(30.0));
+    long long lit = 400;  // the occluder top: at most 16.3 degrees off axis
+    for (int j = 0; j < kSize; ++j)
+        for (int i = 0; i < kSize; ++i)
+        {
+            const double x = -15 + 0.1 * (i + 0.5), y = -15 + 0.1 * (j + 0.5);
+            const bool inShadowSquare = std::fabs(x) < 2 && std::fabs(y) < 2;
+            lit += (std::hypot(x, y) < radius && !inShadowSquare) ? 1 : 0;
+        }
+    EXPECT_EQ(m.count(255), lit);
+    EXPECT_EQ(m.count(0), kGround - lit);
+}
+
+TEST(ReferenceSpot, ConePointingAwayLightsNothing)
+{
+    Light spot = pointLight({0, 0, 8});
+    spot.type = Light::SPOT;
+    spot.spotDirection = osg::Vec3d(0, 0, 1);
+    spot.spotCutoffDeg = 60.0;
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), spot);
+    EXPECT_EQ(m.count(255), 0);
+    EXPECT_EQ(m.count(0), kGround);
+}
+
+// ---------------------------------------------------------------------------------------
+// Grazing band
+
+struct GrazingCase
+{
+    const char* name;
+    double elevationDeg;  // of a directional light above the ground plane
+    long long grazing;
+    long long lit;
+};
+
+const GrazingCase kGrazingCases[] = {
+    {"OneDegree", 1.0, kGround, kGround},      // N.L = sin 1 = 0.0175
+    {"JustInside", 2.8, kGround, kGround},     // sin 2.8 = 0.0488
+    {"JustOutside", 3.0, 0, kGround},          // sin 3.0 = 0.0523
+    {"Steep", 10.0, 0, kGround},
+    {"BelowHorizon", -1.0, 0, 0},              // N.L < 0: not grazing, no light
+};
+
+void PrintTo(const GrazingCase& c, std::ostream* os) { *os << c.name; }
+
+class Grazing : public testing::TestWithParam<GrazingCase>
+{
+};
+
+TEST_P(Grazing, BandIsZeroToFivePercent)
+{
+    const GrazingCase& c = GetParam();
+    const double a = osg::DegreesToRadians(c.elevationDeg);
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::None), topCamera(),
+                                                directional({std::cos(a), 0, std::sin(a)}));
+    EXPECT_EQ(grazingCount(m), c.grazing);
+    EXPECT_EQ(m.count(255), c.lit);
+    EXPECT_EQ(m.count(128), kBackground);
+}
+
+INSTANTIATE_TEST_SUITE_P(Reference, Grazing, testing::ValuesIn(kGrazingCases),
+                         [](const testing::TestParamInfo<GrazingCase>& info) { return info.param.name; });
+
+TEST(ReferenceGrazing, ComparisonExcludesTheBand)
+{
+    const double a = osg::DegreesToRadians(1.0);
+    const Mask ref = ossref::computeReferenceMask(*groundScene(Occluder::None), topCamera(),
+                                                  directional({std::cos(a), 0, std::sin(a)}));
+    const Mask allDark = Mask::filled(kSize, kSize, 0);
+    const Comparison c = ossref::compareMasks(allDark, ref);
+    ASSERT_TRUE(c.valid);
+    EXPECT_EQ(c.grazingExcluded, kGround);
+    EXPECT_EQ(c.geometryPixels, 0);
+    EXPECT_EQ(c.wrongPixels, 0);
+    EXPECT_EQ(c.wrongPct, 0.0);
+    EXPECT_EQ(c.coverageMismatch, kBackground);
+}
+
+// ---------------------------------------------------------------------------------------
+// Robustness
+
+TEST(ReferenceRobustness, BadTrianglesAreSkipped)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    osg::ref_ptr<osg::Geometry> g = quad(-10, 10, -10, 10, 0);
+    osg::Vec3Array* v = static_cast<osg::Vec3Array*>(g->getVertexArray());
+    const std::array<osg::Vec3, 12> bad = {{{0, 0, 1}, {nan, 0, 1}, {1, 1, 1},      // NaN
+                                            {0, 0, 2}, {1, 0, 2}, {0, inf, 2},      // Inf
+                                            {0, 0, 3}, {1, 1, 3}, {2, 2, 3},        // collinear
+                                            {5, 5, 5}, {5, 5, 5}, {6, 5, 5}}};      // repeated vertex
+    for (const osg::Vec3& p : bad) v->push_back(p);
+    g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 4, 12));
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(g.get()));
+    osg::ref_ptr<osg::MatrixTransform> nanTransform = new osg::MatrixTransform;
+    osg::Matrixd nanMatrix;
+    nanMatrix(3, 0) = nan;
+    nanTransform->setMatrix(nanMatrix);
+    nanTransform->addChild(geode(quad(-1, 1, -1, 1, 4).get()));
+    root->addChild(nanTransform.get());
+
+    const ossref::TriangleSoup soup = ossref::collectTriangles(*root);
+    EXPECT_EQ(soup.size(), 2u);
+    EXPECT_EQ(soup.skipped, 4 + 2);
+    for (const osg::Vec3d& p : soup.vertices) EXPECT_TRUE(std::isfinite(p.length2()));
+
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({0, 0, 1}));
+    EXPECT_EQ(m.count(255), kGround);
+    EXPECT_EQ(m.count(128), kBackground);
+}
+
+TEST(ReferenceRobustness, EmptySceneAndDegenerateInputs)
+{
+    osg::ref_ptr<osg::Group> empty = new osg::Group;
+    const Mask m = ossref::computeReferenceMask(*empty, topCamera(), directional({0, 0, 1}));
+    EXPECT_EQ(m.count(128), kSize * kSize);
+
+    Camera noPixels = topCamera();
+    noPixels.width = 0;
+    EXPECT_TRUE(ossref::computeReferenceMask(*groundScene(Occluder::Quad), noPixels, directional({0, 0, 1})).empty());
+
+    // A zero light direction lights nothing but still shows the geometry.
+    const Mask dark = ossref::computeReferenceMask(*groundScene(Occluder::Quad), topCamera(), directional({0, 0, 0}));
+    EXPECT_EQ(dark.count(0), kGround);
+}
+
+TEST(ReferenceTracer, OneBvhManyLights)
+{
+    const ossref::Tracer tracer(*groundScene(Occluder::Quad));
+    EXPECT_EQ(tracer.triangleCount(), 4u);
+    EXPECT_EQ(tracer.render(topCamera(), directional({1, 0, 1})).count(0), 400);
+    EXPECT_EQ(tracer.render(topCamera(), pointLight({0, 0, 8}), 1).count(0), 1200);
+    // eps = 1e-5 R + 1e-6 |p - C| with R = half the diagonal of [-10,10]^2 x [0,4], C = (0,0,2).
+    EXPECT_NEAR(tracer.epsilonAt(osg::Vec3d(0, 0, 2)), 1e-5 * std::sqrt(204.0), 1e-12);
+}
+
+// ---------------------------------------------------------------------------------------
+// Lights from OSG
+
+TEST(ReferenceLight, FromOsgLight)
+{
+    osg::ref_ptr<osg::Light> l = new osg::Light;
+    l->setPosition(osg::Vec4(0, 0, 1, 0));
+    const osg::Matrixd rotX90 = osg::Matrixd::rotate(osg::PI_2, osg::Vec3d(1, 0, 0)) * osg::Matrixd::translate(5, 5, 5);
+    Light d = ossref::lightFromOsg(*l, rotX90);
+    EXPECT_EQ(d.type, Light::DIRECTIONAL);
+    EXPECT_NEAR((d.vector - osg::Vec3d(0, -1, 0)).length(), 0.0, 1e-12);  // z rotated about x, not translated
+
+    l->setPosition(osg::Vec4(1, 2, 3, 1));
+    Light p = ossref::lightFromOsg(*l, osg::Matrixd::translate(10, 0, 0));
+    EXPECT_EQ(p.type, Light::POINT);
+    EXPECT_NEAR((p.vector - osg::Vec3d(11, 2, 3)).length(), 0.0, 1e-12);
+
+    l->setPosition(osg::Vec4(2, 4, 6, 2));  // homogeneous
+    l->setDirection(osg::Vec3(0, 0, -1));
+    l->setSpotCutoff(25);
+    Light s = ossref::lightFromOsg(*l, rotX90);
+    EXPECT_EQ(s.type, Light::SPOT);
+    EXPECT_NEAR((s.vector - osg::Vec3d(6, 2, 7)).length(), 0.0, 1e-12);  // (1,2,3) -> (1,-3,2) + 5
+    EXPECT_NEAR((s.spotDirection - osg::Vec3d(0, 1, 0)).length(), 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(s.spotCutoffDeg, 25.0);
+}
+
+TEST(ReferenceLight, FromLightSourceUsesItsWorldMatrix)
+{
+    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
+    source->getLight()->setPosition(osg::Vec4(0, 0, 0, 1));
+    osg::ref_ptr<osg::MatrixTransform> t = new osg::MatrixTransform(osg::Matrixd::translate(1, 2, 3));
+    t->addChild(source.get());
+    const Light l = ossref::lightFromLightSource(*source);
+    EXPECT_EQ(l.type, Light::POINT);
+    EXPECT_NEAR((l.vector - osg::Vec3d(1, 2, 3)).length(), 0.0, 1e-12);
+}
+
+// ---------------------------------------------------------------------------------------
+// Comparison
+
+TEST(ReferenceCompare, HandMadeMasks)
+{
+    Mask ref = maskFromRows(4, {{255, 255, 0, 0}, {255, 255, 0, 0}, {128, 128, 255, 255}});
+    ref.grazing[1 * 4 + 3] = 1;  // both have geometry: excluded
+    ref.grazing[2 * 4 + 0] = 1;  // background in both: irrelevant
+    const Mask test = maskFromRows(4, {{255, 0, 0, 0}, {255, 255, 255, 0}, {128, 255, 128, 255}});
+    const Comparison c = ossref::compareMasks(test, ref);
+    ASSERT_TRUE(c.valid) << c.error;
+    EXPECT_EQ(c.geometryPixels, 8);     // 4 + 4 + 1 with geometry in both, minus 1 grazing
+    EXPECT_EQ(c.wrongPixels, 2);        // (1,0) and (2,1)
+    EXPECT_EQ(c.coverageMismatch, 2);   // (1,2) and (2,2)
+    EXPECT_EQ(c.grazingExcluded, 1);
+    EXPECT_DOUBLE_EQ(c.wrongPct, 25.0);
+    EXPECT_DOUBLE_EQ(c.meanWrongDistance, 0.0);  // both wrong pixels lie on the boundary
+}
+
+TEST(ReferenceCompare, IdenticalMasksHaveNoError)
+{
+    const Mask ref = maskFromRows(3, {{0, 255, 128}, {255, 255, 0}});
+    const Comparison c = ossref::compareMasks(ref, ref);
+    ASSERT_TRUE(c.valid);
+    EXPECT_EQ(c.geometryPixels, 5);
+    EXPECT_EQ(c.wrongPixels, 0);
+    EXPECT_EQ(c.coverageMismatch, 0);
+    EXPECT_EQ(c.wrongPct, 0.0);
+}
+
+TEST(ReferenceCompare, ValuesBetweenLevelsAreClassified)
+{
+    const Mask ref = maskFromRows(5, {{0, 0, 255, 255, 128}});
+    const Mask test = maskFromRows(5, {{63, 193, 192, 200, 64}});  // 0, 255, bg, 255, bg
+    const Comparison c = ossref::compareMasks(test, ref);
+    EXPECT_EQ(c.geometryPixels, 3);
+    EXPECT_EQ(c.wrongPixels, 1);
+    EXPECT_EQ(c.coverageMismatch, 1);
+}
+
+TEST(ReferenceCompare, MeanDistanceToTheReferenceBoundary)
+{
+    // Boundary: pixels 4 (lit) and 5 (dark). Wrong pixels 0 and 9 are 4 pixels away.
+    const Mask ref = maskFromRows(10, {{255, 255, 255, 255, 255, 0, 0, 0, 0, 0}});
+    const Mask test = maskFromRows(10, {{0, 255, 255, 255, 255, 0, 0, 0, 0, 255}});
+    const Comparison c = ossref::compareMasks(test, ref);
+    EXPECT_EQ(c.wrongPixels, 2);
+    EXPECT_DOUBLE_EQ(c.meanWrongDistance, 4.0);
+
+    const std::vector<float> d = ossref::boundaryDistance(maskFromRows(3, {{255, 255, 255}, {255, 255, 255}, {255, 255, 0}}));
+    ASSERT_EQ(d.size(), 9u);
+    // Boundary: the dark corner (2,2) and its lit neighbours (1,2) and (2,1).
+    EXPECT_FLOAT_EQ(d[0], std::sqrt(5.0f));  // (0,0) -> (1,2) or (2,1)
+    EXPECT_FLOAT_EQ(d[4], 1.0f);             // (1,1) -> (1,2)
+    EXPECT_FLOAT_EQ(d[8], 0.0f);
+    EXPECT_FLOAT_EQ(d[5], 0.0f);
+}
+
+TEST(ReferenceCompare, NoBoundaryGivesNegativeDistance)
+{
+    const Comparison c = ossref::compareMasks(maskFromRows(2, {{0, 0}}), maskFromRows(2, {{255, 255}}));
+    EXPECT_EQ(c.wrongPixels, 2);
+    EXPECT_EQ(c.meanWrongDistance, -1.0);
+}
+
+TEST(ReferenceCompare, MismatchedSizesAreReportedNotFatal)
+{
+    const Comparison c = ossref::compareMasks(Mask::filled(4, 3), Mask::filled(3, 4));
+    EXPECT_FALSE(c.valid);
+    EXPECT_FALSE(c.error.empty());
+    EXPECT_EQ(c.geometryPixels, 0);
+    EXPECT_FALSE(ossref::compareMasks(Mask(), Mask::filled(3, 4)).valid);
+    Mask broken = Mask::filled(3, 4);
+    broken.value.resize(5);
+    EXPECT_FALSE(ossref::compareMasks(broken, Mask::filled(3, 4)).valid);
+    EXPECT_FALSE(ossref::diffImage(Mask::filled(4, 3), Mask::filled(3, 4)).valid());
+}
+
+TEST(ReferenceCompare, DiffImageColours)
+{
+    // Top row: says shadow where lit (red), bottom row: says lit where dark (green), then
+    // coverage (blue) and agreement (reference gray halved).
+    const Mask ref = maskFromRows(2, {{255, 255}, {0, 128}});
+    const Mask test = maskFromRows(2, {{0, 255}, {255, 0}});
+    const osg::ref_ptr<osg::Image> img = ossref::diffImage(test, ref);
+    ASSERT_TRUE(img.valid());
+    ASSERT_EQ(img->getPixelFormat(), GLenum(GL_RGB));
+    auto rgb = [&](int x, int glRow) {
+        const unsigned char* p = img->data(x, glRow);
+        return std::array<int, 3>{p[0], p[1], p[2]};
+    };
+    EXPECT_EQ(rgb(0, 1), (std::array<int, 3>{255, 0, 0}));   // top row is the last in memory
+    EXPECT_EQ(rgb(1, 1), (std::array<int, 3>{127, 127, 127}));
+    EXPECT_EQ(rgb(0, 0), (std::array<int, 3>{0, 255, 0}));
+    EXPECT_EQ(rgb(1, 0), (std::array<int, 3>{0, 0, 255}));
+}
+
+// ---------------------------------------------------------------------------------------
+// Images and files
+
+/** CRC-32 of PNG chunks (ISO 3309). */
+uint32_t crc32(const std::string& bytes)
+{
+    uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : bytes)
+    {
+        c ^= b;
+        for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    }
+    return c ^ 0xFFFFFFFFu;
+}
+
+std::string bigEndian(uint32_t v)
+{
+    return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+std::string chunk(const std::string& type, const std::string& data)
+{
+    return bigEndian(uint32_t(data.size())) + type + data + bigEndian(crc32(type + data));
+}
+
+/** An 8-bit gray PNG written by hand (one stored deflate block, no filter), rows given
+ *  top first as the PNG format defines them. Independent of osgDB's writer. */
+std::string handMadePng(int width, const std::vector<std::vector<int>>& rows)
+{
+    std::string raw;
+    for (const auto& row : rows)
+    {
+        raw += char(0);  // filter: none
+        for (int x = 0; x < width; ++x) raw += char(row[x]);
+    }
+    uint32_t a = 1, b = 0;
+    for (unsigned char c : raw) a = (a + c) % 65521, b = (b + a) % 65521;
+    const uint16_t len = uint16_t(raw.size());
+    std::string z = {char(0x78), char(0x01), char(0x01), char(len & 0xFF), char(len >> 8), char(~len & 0xFF),
+                     char((~len >> 8) & 0xFF)};
+    z += raw + bigEndian((b << 16) | a);
+    const std::string header = bigEndian(uint32_t(width)) + bigEndian(uint32_t(rows.size())) + std::string{8, 0, 0, 0, 0};
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("IDAT", z) + chunk("IEND", "");
+}
+
+TEST(ReferenceImages, ReadMaskKeepsTheTopRowOfAHandMadePng)
+{
+    const std::string path = tempPath("ossref_handmade.png");
+    std::ofstream(path, std::ios::binary) << handMadePng(3, {{0, 0, 0}, {255, 255, 255}, {128, 128, 255}});
+    Mask m;
+    ASSERT_TRUE(ossref::readMask(path, m));
+    ASSERT_EQ(m.width, 3);
+    ASSERT_EQ(m.height, 3);
+    EXPECT_EQ(m.value, (std::vector<uint8_t>{0, 0, 0, 255, 255, 255, 128, 128, 255}));
+    std::remove(path.c_str());
+}
+
+TEST(ReferenceImages, WriteReadRoundTripKeepsRows)
+{
+    Mask m = Mask::filled(5, 4, 255);
+    std::fill(m.value.begin(), m.value.begin() + 5, 0);  // top row dark
+    m.value[2 * 5 + 1] = 128;
+    const std::string path = tempPath("ossref_roundtrip.png");
+    ASSERT_TRUE(ossref::writeMask(m, path));
+
+    Mask back;
+    ASSERT_TRUE(ossref::readMask(path, back));
+    EXPECT_EQ(back.width, 5);
+    EXPECT_EQ(back.height, 4);
+    EXPECT_EQ(back.value, m.value);
+
+    // osgDB hands the PNG back bottom row first: the dark top row is the last in memory.
+    const osg::ref_ptr<osg::Image> img = osgDB::readRefImageFile(path);
+    ASSERT_TRUE(img.valid());
+    EXPECT_EQ(*img->data(0, 3), 0);
+    EXPECT_EQ(*img->data(0, 0), 255);
+    std::remove(path.c_str());
+    EXPECT_FALSE(ossref::readMask(path, back));
+}
+
+TEST(ReferenceImages, ImageConversions)
+{
+    const Mask m = maskFromRows(2, {{0, 255}, {128, 0}});
+    const osg::ref_ptr<osg::Image> lum = ossref::imageFromMask(m);
+    ASSERT_TRUE(lum.valid());
+    EXPECT_EQ(lum->getPixelFormat(), GLenum(GL_LUMINANCE));
+    EXPECT_EQ(*lum->data(1, 1), 255);  // top row, right pixel
+    EXPECT_EQ(ossref::maskFromImage(*lum).value, m.value);
+
+    osg::ref_ptr<osg::Image> rgba = new osg::Image;
+    rgba->allocateImage(2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    const unsigned char px[8] = {10, 200, 200, 255, 230, 0, 0, 255};
+    std::copy(px, px + 8, rgba->data());
+    EXPECT_EQ(ossref::maskFromImage(*rgba).value, (std::vector<uint8_t>{0, 255}));
+
+    osg::ref_ptr<osg::Image> flt = new osg::Image;
+    flt->allocateImage(3, 1, 1, GL_LUMINANCE, GL_FLOAT);
+    const float fv[3] = {0.0f, 0.5f, 1.0f};
+    std::copy(fv, fv + 3, reinterpret_cast<float*>(flt->data()));
+    EXPECT_EQ(ossref::maskFromImage(*flt).value, (std::vector<uint8_t>{0, 128, 255}));
+
+    osg::ref_ptr<osg::Image> depth = new osg::Image;
+    depth->allocateImage(2, 2, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+    EXPECT_TRUE(ossref::maskFromImage(*depth).empty());
+}
+
+// ---------------------------------------------------------------------------------------
+// Speed
+
+/** A 224 x 224 cell height field (100352 triangles) of bumps over [-20, 20]^2. */
+osg::ref_ptr<osg::Node> bumpyTerrain()
+{
+    const int n = 224;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+        {
+            const float x = -20.0f + 40.0f * i / n, y = -20.0f + 40.0f * j / n;
+            v->push_back(osg::Vec3(x, y, 1.5f * std::sin(0.7f * x) * std::cos(0.5f * y)));
+        }
+    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+            const unsigned a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            for (unsigned k : {a, b, d, a, d, c}) tris->push_back(k);
+        }
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setVertexArray(v.get());
+    g->addPrimitiveSet(tris.get());
+    return geode(g.get());
+}
+
+TEST(ReferenceSpeed, HundredThousandTrianglesAt1024x768)
+{
+    const osg::ref_ptr<osg::Node> scene = bumpyTerrain();
+    Camera c;
+    c.eye = osg::Vec3d(0, -35, 25);
+    c.center = osg::Vec3d(0, 0, 0);
+    c.up = osg::Vec3d(0, 0, 1);
+    c.fovyDeg = 45;
+    c.width = 1024;
+    c.height = 768;
+    const auto start = std::chrono::steady_clock::now();
+    const Mask m = ossref::computeReferenceMask(*scene, c, directional({1, 0.3, 0.4}));
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "computeReferenceMask 1024x768, 100352 triangles: " << ms << " ms" << std::endl;
+    RecordProperty("reference_ms", std::to_string(ms));
+    EXPECT_GT(m.count(0), 10000);
+    EXPECT_GT(m.count(255), 10000);
+    EXPECT_LT(ms, 20000.0);  // a few hundred ms on two cores; generous for shared machines
+}
+
+} // namespace

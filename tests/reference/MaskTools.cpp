@@ -1,0 +1,246 @@
+// Shadow masks: comparison against the reference (MEASURE.md), distance to the reference
+// shadow boundary, conversion to and from osg::Image, PNG files and diff images.
+#include "reference/Reference.h"
+
+#include <osgDB/ReadFile>
+#include <osgDB/WriteFile>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace ossref {
+
+namespace {
+
+const double kFar = 1e30;  // "no boundary" in the squared distance transform
+
+/** 1D squared Euclidean distance transform of f (Felzenszwalb & Huttenlocher 2012). */
+void distanceTransform1D(const std::vector<double>& f, std::vector<double>& d)
+{
+    const int n = int(f.size());
+    std::vector<int> v(n);
+    std::vector<double> z(n + 1);
+    int k = 0;
+    v[0] = 0;
+    z[0] = -kFar;
+    z[1] = kFar;
+    for (int q = 1; q < n; ++q)
+    {
+        double s = 0.0;
+        while (true)
+        {
+            s = ((f[q] + double(q) * q) - (f[v[k]] + double(v[k]) * v[k])) / (2.0 * q - 2.0 * v[k]);
+            if (s > z[k] || k == 0) break;
+            --k;
+        }
+        if (s <= z[k]) s = z[k];  // only possible at k == 0
+        ++k;
+        v[k] = q;
+        z[k] = s;
+        z[k + 1] = kFar;
+    }
+    d.resize(n);
+    k = 0;
+    for (int q = 0; q < n; ++q)
+    {
+        while (z[k + 1] < q) ++k;
+        d[q] = double(q - v[k]) * (q - v[k]) + f[v[k]];
+    }
+}
+
+bool isBoundary(const std::vector<uint8_t>& c, int w, int h, int x, int y)
+{
+    const uint8_t v = c[size_t(y) * w + x];
+    if (v == MASK_BACKGROUND) return false;
+    const uint8_t other = v == MASK_LIT ? MASK_NO_LIGHT : MASK_LIT;
+    return (x > 0 && c[size_t(y) * w + x - 1] == other) || (x + 1 < w && c[size_t(y) * w + x + 1] == other) ||
+           (y > 0 && c[size_t(y - 1) * w + x] == other) || (y + 1 < h && c[size_t(y + 1) * w + x] == other);
+}
+
+bool consistent(const Mask& m)
+{
+    return m.width > 0 && m.height > 0 && m.value.size() == size_t(m.width) * m.height;
+}
+
+/** First channel of pixel x of an image row, as 0..255. */
+uint8_t firstChannel(const unsigned char* row, int x, unsigned pixelBytes, GLenum dataType)
+{
+    const unsigned char* p = row + size_t(x) * pixelBytes;
+    if (dataType == GL_UNSIGNED_BYTE) return *p;
+    float f = 0.0f;
+    std::memcpy(&f, p, sizeof(float));
+    if (!(f > 0.0f)) return 0;
+    return uint8_t(std::min(255.0f, f * 255.0f + 0.5f));
+}
+
+bool supportedFormat(GLenum format)
+{
+    switch (format)
+    {
+    case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_RED: case GL_RGB: case GL_RGBA: case GL_BGR: case GL_BGRA:
+        return true;
+    default:
+        return false;
+    }
+}
+
+} // namespace
+
+Mask Mask::filled(int width, int height, uint8_t fill)
+{
+    Mask m;
+    m.width = std::max(0, width);
+    m.height = std::max(0, height);
+    m.value.assign(size_t(m.width) * m.height, fill);
+    m.grazing.assign(m.value.size(), 0);
+    return m;
+}
+
+long long Mask::count(uint8_t v) const { return std::count(value.begin(), value.end(), v); }
+
+uint8_t classify(uint8_t v)
+{
+    if (v < 64) return MASK_NO_LIGHT;
+    if (v > 192) return MASK_LIT;
+    return MASK_BACKGROUND;
+}
+
+std::vector<float> boundaryDistance(const Mask& mask)
+{
+    const int w = mask.width, h = mask.height;
+    if (!consistent(mask)) return {};
+    std::vector<uint8_t> c(mask.value.size());
+    std::transform(mask.value.begin(), mask.value.end(), c.begin(), classify);
+
+    std::vector<double> grid(c.size()), f, d;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) grid[size_t(y) * w + x] = isBoundary(c, w, h, x, y) ? 0.0 : kFar;
+    f.resize(h);
+    for (int x = 0; x < w; ++x)  // columns
+    {
+        for (int y = 0; y < h; ++y) f[y] = grid[size_t(y) * w + x];
+        distanceTransform1D(f, d);
+        for (int y = 0; y < h; ++y) grid[size_t(y) * w + x] = d[y];
+    }
+    f.resize(w);
+    std::vector<float> out(c.size());
+    for (int y = 0; y < h; ++y)  // rows
+    {
+        std::copy(grid.begin() + size_t(y) * w, grid.begin() + size_t(y + 1) * w, f.begin());
+        distanceTransform1D(f, d);
+        for (int x = 0; x < w; ++x)
+            out[size_t(y) * w + x] = d[x] >= 0.5 * kFar ? std::numeric_limits<float>::infinity() : float(std::sqrt(d[x]));
+    }
+    return out;
+}
+
+Comparison compareMasks(const Mask& test, const Mask& reference)
+{
+    Comparison r;
+    if (!consistent(test) || !consistent(reference))
+    {
+        r.error = "empty or inconsistent mask";
+        return r;
+    }
+    if (test.width != reference.width || test.height != reference.height)
+    {
+        r.error = "size mismatch: " + std::to_string(test.width) + "x" + std::to_string(test.height) + " vs reference " +
+                  std::to_string(reference.width) + "x" + std::to_string(reference.height);
+        return r;
+    }
+    r.valid = true;
+    std::vector<size_t> wrong;
+    for (size_t i = 0; i < test.value.size(); ++i)
+    {
+        const uint8_t t = classify(test.value[i]), ref = classify(reference.value[i]);
+        if ((t == MASK_BACKGROUND) != (ref == MASK_BACKGROUND)) ++r.coverageMismatch;
+        if (t == MASK_BACKGROUND || ref == MASK_BACKGROUND) continue;
+        if (reference.isGrazing(i))
+        {
+            ++r.grazingExcluded;
+            continue;
+        }
+        ++r.geometryPixels;
+        if (t != ref) wrong.push_back(i);
+    }
+    r.wrongPixels = (long long)wrong.size();
+    r.wrongPct = r.geometryPixels > 0 ? 100.0 * r.wrongPixels / r.geometryPixels : 0.0;
+    if (wrong.empty()) return r;
+
+    const std::vector<float> distance = boundaryDistance(reference);
+    double sum = 0.0;
+    for (size_t i : wrong) sum += distance[i];
+    r.meanWrongDistance = std::isfinite(sum) ? sum / wrong.size() : -1.0;
+    return r;
+}
+
+Mask maskFromImage(const osg::Image& image)
+{
+    const GLenum type = image.getDataType();
+    if (image.s() <= 0 || image.t() <= 0 || !image.data() || !supportedFormat(image.getPixelFormat()) ||
+        (type != GL_UNSIGNED_BYTE && type != GL_FLOAT))
+        return Mask();
+    Mask m = Mask::filled(image.s(), image.t(), MASK_BACKGROUND);
+    const unsigned pixelBytes = image.getPixelSizeInBits() / 8;
+    for (int r = 0; r < m.height; ++r)
+    {
+        const unsigned char* row = image.data(0, unsigned(m.height - 1 - r));
+        for (int x = 0; x < m.width; ++x)
+            m.value[size_t(r) * m.width + x] = classify(firstChannel(row, x, pixelBytes, type));
+    }
+    return m;
+}
+
+osg::ref_ptr<osg::Image> imageFromMask(const Mask& mask)
+{
+    if (!consistent(mask)) return nullptr;
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(mask.width, mask.height, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, 1);
+    image->setInternalTextureFormat(GL_LUMINANCE);
+    for (int r = 0; r < mask.height; ++r)
+        std::memcpy(image->data(0, unsigned(mask.height - 1 - r)), &mask.value[size_t(r) * mask.width], mask.width);
+    return image;
+}
+
+bool writeMask(const Mask& mask, const std::string& path)
+{
+    osg::ref_ptr<osg::Image> image = imageFromMask(mask);
+    return image.valid() && osgDB::writeImageFile(*image, path);
+}
+
+bool readMask(const std::string& path, Mask& mask)
+{
+    osg::ref_ptr<osg::Image> image = osgDB::readRefImageFile(path);
+    if (!image.valid()) return false;
+    Mask m = maskFromImage(*image);
+    if (m.empty()) return false;
+    mask = std::move(m);
+    return true;
+}
+
+osg::ref_ptr<osg::Image> diffImage(const Mask& test, const Mask& reference)
+{
+    if (!consistent(test) || !consistent(reference) || test.width != reference.width || test.height != reference.height)
+        return nullptr;
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(test.width, test.height, 1, GL_RGB, GL_UNSIGNED_BYTE, 1);
+    for (int r = 0; r < test.height; ++r)
+    {
+        unsigned char* out = image->data(0, unsigned(test.height - 1 - r));
+        for (int x = 0; x < test.width; ++x, out += 3)
+        {
+            const size_t i = size_t(r) * test.width + x;
+            const uint8_t t = classify(test.value[i]), ref = classify(reference.value[i]);
+            const uint8_t gray = uint8_t(reference.value[i] / 2);
+            out[0] = out[1] = out[2] = gray;
+            if (t == MASK_NO_LIGHT && ref == MASK_LIT) out[0] = 255, out[1] = out[2] = 0;
+            else if (t == MASK_LIT && ref == MASK_NO_LIGHT) out[1] = 255, out[0] = out[2] = 0;
+            else if ((t == MASK_BACKGROUND) != (ref == MASK_BACKGROUND)) out[2] = 255, out[0] = out[1] = 0;
+        }
+    }
+    return image;
+}
+
+} // namespace ossref

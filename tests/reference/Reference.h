@@ -1,0 +1,209 @@
+/* -*-c++-*- */
+/* osgShadowSilhouette - exact reference shadow masks.
+ *
+ * Ray casting with Embree 3 following the conventions of MEASURE.md: one primary ray
+ * through each pixel centre, one shadow ray from the visible point toward the light.
+ * Used by the tests, the renderer (--mask) and the benchmark to score every mode.
+ */
+#ifndef OSGSHADOWSILHOUETTE_REFERENCE
+#define OSGSHADOWSILHOUETTE_REFERENCE 1
+
+#include <osg/Image>
+#include <osg/Light>
+#include <osg/LightSource>
+#include <osg/Matrixd>
+#include <osg/Node>
+#include <osg/Vec3d>
+#include <osg/ref_ptr>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ossref {
+
+/** Mask values (MEASURE.md). */
+enum MaskValue : uint8_t { MASK_NO_LIGHT = 0, MASK_BACKGROUND = 128, MASK_LIT = 255 };
+
+/** N.L below this (and above 0) puts a pixel in the grazing band. */
+constexpr double GRAZING_NDOTL = 0.05;
+
+/** A pinhole camera exactly as OSG builds it: osg::Matrixd::lookAt(eye, center, up) and
+ *  osg::Matrixd::perspective(fovyDeg, width / (double)height, near, far). Near and far do
+ *  not change the rays and are not part of the camera. Pixels are in GL window
+ *  coordinates: (0, 0) is the bottom-left pixel, its centre is at (0.5, 0.5). */
+struct Camera
+{
+    osg::Vec3d eye{0.0, 0.0, 10.0};
+    osg::Vec3d center{0.0, 0.0, 0.0};
+    osg::Vec3d up{0.0, 1.0, 0.0};
+    double fovyDeg = 30.0;
+    int width = 1024;
+    int height = 768;
+};
+
+/** The world-space ray through the window point (winX, winY) (GL window coordinates,
+ *  pixel centres at +0.5). The direction is normalised; the origin is the eye. */
+void primaryRay(const Camera& camera, double winX, double winY,
+                osg::Vec3d& origin, osg::Vec3d& direction);
+
+/** One light. DIRECTIONAL: `vector` is the direction TOWARD the light (need not be
+ *  normalised). POINT and SPOT: `vector` is the world position. SPOT: points whose
+ *  direction from the light makes an angle larger than spotCutoffDeg with spotDirection
+ *  receive no light. */
+struct Light
+{
+    enum Type { DIRECTIONAL, POINT, SPOT };
+    Type type = DIRECTIONAL;
+    osg::Vec3d vector{0.0, 0.0, 1.0};
+    osg::Vec3d spotDirection{0.0, 0.0, -1.0};
+    double spotCutoffDeg = 180.0;
+};
+
+/** The Light equivalent of an osg::Light placed by the local-to-world matrix `world`
+ *  (the matrix of its LightSource). Position w == 0 gives DIRECTIONAL (the direction is
+ *  transformed by the upper 3x3 of `world`); otherwise the position is transformed by
+ *  `world` and divided by w, and a spot cutoff below 180 degrees gives SPOT with the
+ *  spot direction transformed by the upper 3x3. */
+Light lightFromOsg(const osg::Light& light, const osg::Matrixd& world = osg::Matrixd::identity());
+
+/** lightFromOsg() for a LightSource: the first of its world matrices (identity for a
+ *  parentless or ABSOLUTE_RF source). A LightSource without a light gives the default
+ *  Light. */
+Light lightFromLightSource(const osg::LightSource& source);
+
+/** A shadow mask, row 0 = TOP row (as in the PNG). value: 128 background, 0 no light,
+ *  255 lit. grazing: 1 where the reference point lies in the band 0 < N.L < 0.05 (empty
+ *  or all 0 for masks that come from images). */
+struct Mask
+{
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> value;
+    std::vector<uint8_t> grazing;
+
+    /** A width x height mask filled with `fill`, grazing all 0. */
+    static Mask filled(int width, int height, uint8_t fill = MASK_BACKGROUND);
+
+    bool empty() const { return width <= 0 || height <= 0; }
+    /** Value at (column x, row from the top). */
+    uint8_t at(int x, int rowFromTop) const { return value[size_t(rowFromTop) * width + x]; }
+    /** Value at GL window pixel (x, y), origin bottom-left. */
+    uint8_t atGL(int x, int y) const { return at(x, height - 1 - y); }
+    bool isGrazing(size_t i) const { return i < grazing.size() && grazing[i] != 0; }
+    /** Number of pixels equal to v. */
+    long long count(uint8_t v) const;
+};
+
+/** World-space triangles of a scene, as the reference sees them. */
+struct TriangleSoup
+{
+    std::vector<osg::Vec3d> vertices;  ///< three per triangle, world coordinates
+    std::vector<uint8_t> casts;         ///< per triangle: 1 if it casts shadows
+    long long skipped = 0;              ///< triangles dropped: NaN/Inf or zero area
+
+    size_t size() const { return casts.size(); }
+};
+
+/** Every triangle of every drawable under `scene`, in world coordinates (matrices of
+ *  osg::Transform nodes accumulated; osg::Geometry through osg::TriangleIndexFunctor with
+ *  float or double vertex arrays, other drawables through osg::TriangleFunctor). Nodes
+ *  with (nodeMask & traversalMask) == 0 are skipped with their subgraph; a triangle casts
+ *  when every node on its path passes (nodeMask & traversalMask & castsMask), as
+ *  osgShadow's casts pass does. Only active children of switches are visited; nested
+ *  osg::Camera nodes (render passes, HUDs) are skipped. */
+TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask = ~0u,
+                              unsigned int traversalMask = ~0u);
+
+/** A scene prepared for ray casting (Embree BVHs built once), to render reference masks
+ *  for several cameras and lights. Thread-compatible: render() may be called from
+ *  several threads. Throws std::runtime_error if Embree cannot be initialised. */
+class Tracer
+{
+public:
+    explicit Tracer(const TriangleSoup& triangles);
+    Tracer(const osg::Node& scene, unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u);
+    ~Tracer();
+    Tracer(const Tracer&) = delete;
+    Tracer& operator=(const Tracer&) = delete;
+
+    /** The reference mask (see computeReferenceMask). `threads` 0 = all cores. */
+    Mask render(const Camera& camera, const Light& light, unsigned int threads = 0) const;
+
+    /** Shadow-ray offset used at world point p (see computeReferenceMask). */
+    double epsilonAt(const osg::Vec3d& p) const;
+
+    size_t triangleCount() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> _impl;
+};
+
+/** The exact reference mask. For each pixel one primary ray (tnear 0, no far limit);
+ *  no hit -> 128. At the hit the geometric normal of the triangle, flipped to face the
+ *  camera, is N; L is the normalised direction to the light. N.L <= 0 -> 0; a SPOT light
+ *  whose cone excludes the point -> 0; otherwise a shadow ray toward the light (to
+ *  infinity for DIRECTIONAL, up to the light position for POINT/SPOT) decides 0 if it is
+ *  occluded by a casting triangle and 255 if not. The shadow ray starts at hit + eps*N
+ *  and stops eps before the light, with eps = 1e-5 * R + 1e-6 * |hit - C| (R, C: radius
+ *  and centre of the scene's bounding sphere): the first term covers the BVH's float
+ *  vertex precision relative to the scene size, the second the float precision of points
+ *  far from the centre. grazing = 0 < N.L < 0.05, regardless of shadow or cone.
+ *  Rows are split over all cores. */
+Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light,
+                          unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u);
+
+/** Error of a mask against the reference (MEASURE.md). */
+struct Comparison
+{
+    bool valid = false;             ///< false when the sizes differ or a mask is empty
+    std::string error;              ///< why not valid
+    long long geometryPixels = 0;   ///< both have geometry, reference outside grazing band
+    long long wrongPixels = 0;      ///< among those: one says 0 and the other 255
+    long long coverageMismatch = 0; ///< background in one mask and not in the other
+    long long grazingExcluded = 0;  ///< both have geometry, reference in the grazing band
+    double wrongPct = 0.0;          ///< 100 * wrongPixels / geometryPixels (0 if none)
+    /** Mean Euclidean distance in pixels from each wrong pixel to the nearest pixel of
+     *  the reference shadow boundary (pixels of value 0 or 255 4-adjacent to the other
+     *  value). 0 when there are no wrong pixels, -1 when the reference has no boundary. */
+    double meanWrongDistance = 0.0;
+};
+
+/** Compare `test` with `reference`. Values are classified as in maskFromImage (<64 -> 0,
+ *  >192 -> 255, else background); the grazing band is the reference's. */
+Comparison compareMasks(const Mask& test, const Mask& reference);
+
+/** Per pixel Euclidean distance (in pixels) to the nearest shadow-boundary pixel of
+ *  `mask` (see Comparison::meanWrongDistance); row 0 = top. All +inf when there is no
+ *  boundary. */
+std::vector<float> boundaryDistance(const Mask& mask);
+
+/** Classify one 8-bit value: <64 -> 0, >192 -> 255, else 128. */
+uint8_t classify(uint8_t v);
+
+/** A mask from an image whose data is bottom row first (as OSG keeps it). The first
+ *  channel of GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_RED, GL_RGB, GL_RGBA, GL_BGR, GL_BGRA
+ *  images, GL_UNSIGNED_BYTE or GL_FLOAT (0..1) data, is classified by classify(). Any
+ *  other image gives an empty mask. */
+Mask maskFromImage(const osg::Image& image);
+
+/** A GL_LUMINANCE/GL_UNSIGNED_BYTE image of the mask values, bottom row first, so that
+ *  osgDB writes the PNG top row first. */
+osg::ref_ptr<osg::Image> imageFromMask(const Mask& mask);
+
+/** Write the mask as an 8-bit gray image through osgDB (PNG for a .png path). */
+bool writeMask(const Mask& mask, const std::string& path);
+
+/** Read a mask through osgDB; false (and `mask` untouched) if unreadable. */
+bool readMask(const std::string& path, Mask& mask);
+
+/** An RGB image (bottom row first) showing the error of `test`: red where test says
+ *  shadow and the reference lit, green the reverse, blue where coverage differs, the
+ *  reference's gray levels at half brightness elsewhere. Null if the sizes differ. */
+osg::ref_ptr<osg::Image> diffImage(const Mask& test, const Mask& reference);
+
+} // namespace ossref
+
+#endif
