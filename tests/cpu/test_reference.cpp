@@ -181,6 +181,33 @@ TEST(ReferenceCamera, PrimaryRaysMatchOsgUnprojection)
     }
 }
 
+TEST(ReferenceCamera, FromOsgCamera)
+{
+    osg::ref_ptr<osg::Camera> cam = new osg::Camera;
+    cam->setViewMatrixAsLookAt(osg::Vec3d(3, -7, 5), osg::Vec3d(0.5, 1, 0), osg::Vec3d(0, 0, 1));
+    cam->setProjectionMatrixAsPerspective(40, 640.0 / 360.0, 0.5, 200.0);
+    cam->setViewport(0, 0, 640, 360);
+    Camera c;
+    ASSERT_TRUE(ossref::cameraFromOsg(*cam, c));
+    EXPECT_EQ(c.width, 640);
+    EXPECT_EQ(c.height, 360);
+    EXPECT_NEAR(c.fovyDeg, 40.0, 1e-9);
+    const osg::Matrixd fromWindow =
+        osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() * cam->getViewport()->computeWindowMatrix());
+    osg::Vec3d expected = osg::Vec3d(100.5, 50.5, 1.0) * fromWindow - osg::Vec3d(100.5, 50.5, 0.0) * fromWindow;
+    expected.normalize();
+    osg::Vec3d origin, dir;
+    ossref::primaryRay(c, 100.5, 50.5, origin, dir);
+    EXPECT_NEAR((dir - expected).length(), 0.0, 1e-9);
+
+    Camera untouched;
+    cam->setProjectionMatrixAsPerspective(40, 1.0, 0.5, 200.0);  // aspect differs from the viewport
+    EXPECT_FALSE(ossref::cameraFromOsg(*cam, untouched));
+    cam->setProjectionMatrixAsFrustum(-1, 2, -1, 1, 1, 10);  // off-axis
+    EXPECT_FALSE(ossref::cameraFromOsg(*cam, untouched));
+    EXPECT_EQ(untouched.width, Camera().width);
+}
+
 TEST(ReferenceCamera, TopCameraSeesPixelCentresOnTheGround)
 {
     osg::Vec3d origin, dir;

@@ -318,7 +318,7 @@ RTCScene Tracer::Impl::makeScene(const TriangleSoup& soup, bool castersOnly)
 {
     RTCScene scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
     size_t count = 0;
     for (uint8_t c : soup.casts) count += (!castersOnly || c) ? 1 : 0;
     if (count > 0)
@@ -471,6 +471,27 @@ Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Li
                           unsigned int traversalMask)
 {
     return Tracer(scene, castsMask, traversalMask).render(camera, light);
+}
+
+bool cameraFromOsg(const osg::Camera& camera, Camera& out)
+{
+    const osg::Viewport* viewport = camera.getViewport();
+    double left, right, bottom, top, zNear, zFar;
+    if (!viewport || viewport->width() <= 0 || viewport->height() <= 0 ||
+        !camera.getProjectionMatrixAsFrustum(left, right, bottom, top, zNear, zFar))
+        return false;
+    const double tolerance = 1e-6;
+    const double aspect = viewport->width() / viewport->height();
+    if (std::fabs(left + right) > tolerance * right || std::fabs(bottom + top) > tolerance * top ||
+        std::fabs(right / top - aspect) > tolerance * aspect)
+        return false;
+    Camera result;
+    camera.getViewMatrixAsLookAt(result.eye, result.center, result.up, 1.0);
+    result.fovyDeg = osg::RadiansToDegrees(2.0 * std::atan(top / zNear));
+    result.width = int(viewport->width());
+    result.height = int(viewport->height());
+    out = result;
+    return true;
 }
 
 void primaryRay(const Camera& camera, double winX, double winY, osg::Vec3d& origin, osg::Vec3d& direction)
