@@ -17,6 +17,7 @@
 #include <osg/MatrixTransform>
 #include <osg/Shape>
 #include <osg/ShapeDrawable>
+#include <osg/Switch>
 #include <osg/Viewport>
 #include <osgDB/ReadFile>
 
@@ -345,6 +346,25 @@ TEST_P(NodeMasks, DecideWhatIsSeenAndWhatCasts)
 
 INSTANTIATE_TEST_SUITE_P(Reference, NodeMasks, testing::ValuesIn(kMaskCases),
                          [](const testing::TestParamInfo<MaskCase>& info) { return info.param.name; });
+
+TEST(ReferenceDirectional, CamerasAndSwitches)
+{
+    // Under a root camera: the scene. A nested (HUD) camera and an inactive switch child
+    // contribute nothing.
+    osg::ref_ptr<osg::Camera> root = new osg::Camera;
+    root->setViewMatrix(osg::Matrixd::translate(100, 0, 0));
+    root->addChild(groundScene(Occluder::Quad).get());
+    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
+    hud->addChild(geode(quad(-50, 50, -50, 50, 10).get()));
+    root->addChild(hud.get());
+    osg::ref_ptr<osg::Switch> sw = new osg::Switch;
+    sw->addChild(geode(quad(-50, 50, -50, 50, 20).get()), false);
+    root->addChild(sw.get());
+    EXPECT_EQ(ossref::collectTriangles(*root).size(), 4u);
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({1, 0, 1}));
+    EXPECT_EQ(m.count(0), 400);
+    EXPECT_EQ(m.count(128), kBackground);
+}
 
 TEST(ReferenceDirectional, CastsMaskCountsTrianglesThatCast)
 {

@@ -88,7 +88,12 @@ public:
     }
 
     void apply(osg::Node& node) override { inScope(node, [&] { traverse(node); }); }
-    void apply(osg::Camera&) override {}
+    /** A camera at the root stands for the view: its children are the scene. Nested
+     *  cameras are render passes or HUDs, not world geometry. */
+    void apply(osg::Camera& camera) override
+    {
+        if (getNodePath().size() <= 1) inScope(camera, [&] { traverse(camera); });
+    }
     void apply(osg::Transform& transform) override
     {
         const osg::Matrixd saved = _matrix;

@@ -118,8 +118,9 @@ struct TriangleSoup
  *  float or double vertex arrays, other drawables through osg::TriangleFunctor). Nodes
  *  with (nodeMask & traversalMask) == 0 are skipped with their subgraph; a triangle casts
  *  when every node on its path passes (nodeMask & traversalMask & castsMask), as
- *  osgShadow's casts pass does. Only active children of switches are visited; nested
- *  osg::Camera nodes (render passes, HUDs) are skipped. */
+ *  osgShadow's casts pass does. Only active children of switches are visited. An
+ *  osg::Camera at the root is looked through (its children are the scene, its view matrix
+ *  is ignored); nested osg::Camera nodes (render passes, HUDs) are skipped. */
 TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask = ~0u,
                               unsigned int traversalMask = ~0u);
 
