@@ -408,11 +408,13 @@ SilhouetteShadowTechnique::LightPass SilhouetteShadowTechnique::createLightPass(
     camera->setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
     camera->setClearMask(GL_DEPTH_BUFFER_BIT);
+    // Camera::setViewport() stores the viewport in the camera's StateSet: give each camera
+    // its own (shallow) copy of the shared depth-pass state before setting it.
+    camera->setStateSet(new osg::StateSet(*_depthPassStateSet, osg::CopyOp::SHALLOW_COPY));
     camera->setViewport(0, 0, _shadowMapSize, _shadowMapSize);
     camera->setDrawBuffer(GL_NONE);
     camera->setReadBuffer(GL_NONE);
     camera->attach(osg::Camera::DEPTH_BUFFER, pass.depthTexture.get());
-    camera->setStateSet(_depthPassStateSet.get());
     camera->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
     pass.depthCamera = camera;
     return pass;
@@ -583,6 +585,8 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
     const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
     const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
     vd.numLights->set(n);
+    const int used = static_cast<int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
+    vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
     for (int i = 0; i < n; ++i)
     {
         vd.lightIndex->setElement(i, lights[i].description.lightNum);

@@ -20,13 +20,21 @@ uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 uns
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];// eye space -> light texture space [0,1]^3
 uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 
-// 2x2 PCF of shadow slot `slot` at an eye-space position: 1 lit, 0 shadowed, between at edges.
+// 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
+float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
+{
+    vec4 c = eyeToShadow * eyePosition;
+    return c.w <= 0.0 ? 1.0 : textureProj(map, c); // behind a perspective light: outside its map
+}
+
+// The shadow term of shadow slot `slot`. Sampler arrays take constant indices here: a
+// dynamic index is slow on some drivers (llvmpipe) and needs GLSL 4 elsewhere.
 float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 {
-    vec4 c = oss_eyeToShadow[slot] * eyePosition;
-    if (c.w <= 0.0)
-        return 1.0; // behind a perspective light: outside its map
-    return textureProj(oss_shadowMap[slot], c);
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+        if (s == slot)
+            return oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+    return 1.0;
 }
 
 // The shadow slot of GL light `light`, or -1 when it casts no shadow.

@@ -1,0 +1,148 @@
+/* osgsilhouetteshadow: renders a scene with osgShadowSilhouette (or without shadows),
+ * offscreen or in a window, and measures it as MEASURE.md describes.
+ *
+ *   osgsilhouetteshadow [FILE] --mode shadowmap --map-size 2048 --offscreen \
+ *       --out color.png --mask mask.png --reference ref.png --compare ref.png
+ *
+ * Prints frame_ms_median=..., gpu_ms_median=... and, with --compare or --reference,
+ * wrong_pct=... against the exact ray-cast reference. */
+
+#include "Offscreen.h"
+#include "RenderOptions.h"
+#include "Setup.h"
+
+#include <osgDB/WriteFile>
+#include <osgGA/StateSetManipulator>
+#include <osgGA/TrackballManipulator>
+#include <osgViewer/ViewerEventHandlers>
+
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+using osgShadowSilhouette::SilhouetteShadowTechnique;
+
+/** The shadow mask of light `index`, rendered by the technique's mask view. */
+ossref::Mask renderMask(osshar::Renderer& renderer, SilhouetteShadowTechnique& technique, unsigned int index)
+{
+    const SilhouetteShadowTechnique::DebugView previous = technique.getDebugView();
+    technique.setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
+    technique.setDebugLight(index);
+    osg::ref_ptr<osg::Image> image = renderer.renderAndCapture(osg::Vec4(128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1));
+    technique.setDebugView(previous);
+    return ossref::maskFromImage(*image);
+}
+
+/** "mask%d.png" with the light index; a name without %d is used as it is for light 0 and
+ *  gets "_<index>" before its extension for the others. */
+std::string perLightName(const std::string& pattern, unsigned int index)
+{
+    if (pattern.find("%d") != std::string::npos)
+    {
+        char buf[1024];
+        std::snprintf(buf, sizeof(buf), pattern.c_str(), int(index));
+        return buf;
+    }
+    if (index == 0) return pattern;
+    const std::size_t dot = pattern.rfind('.');
+    return pattern.substr(0, dot) + "_" + std::to_string(index) + (dot == std::string::npos ? "" : pattern.substr(dot));
+}
+
+int runWindowed(osshar::PreparedScene& scene, osg::Node* root)
+{
+    osgViewer::Viewer viewer;
+    viewer.setLightingMode(osg::View::NO_LIGHT);
+    viewer.setSceneData(root);
+    osg::ref_ptr<osgGA::TrackballManipulator> manip = new osgGA::TrackballManipulator;
+    manip->setHomePosition(scene.view.eye, scene.view.center, scene.view.up);
+    viewer.setCameraManipulator(manip.get());
+    viewer.addEventHandler(new osgViewer::StatsHandler);
+    viewer.addEventHandler(new osgViewer::WindowSizeHandler);
+    viewer.addEventHandler(new osgGA::StateSetManipulator(viewer.getCamera()->getOrCreateStateSet()));
+    return viewer.run();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    osg::ArgumentParser arguments(&argc, argv);
+    if (arguments.read("-h") || arguments.read("--help"))
+    {
+        std::cout << osshar::renderOptionsUsage(arguments.getApplicationName());
+        return 0;
+    }
+    osshar::RenderOptions options;
+    std::string error;
+    osshar::PreparedScene scene;
+    osg::ref_ptr<osg::Node> root;
+    osg::ref_ptr<SilhouetteShadowTechnique> technique;
+    if (!osshar::parseRenderOptions(arguments, options, error) || !osshar::prepareScene(options, scene, error) ||
+        !osshar::makeShadowedRoot(options.mode, options.mapSize, scene, root, technique, error))
+    {
+        std::cerr << "osgsilhouetteshadow: " << error << "\n" << osshar::renderOptionsUsage(arguments.getApplicationName());
+        return 1;
+    }
+    osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
+    const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty();
+    if (!batch) return runWindowed(scene, root.get());
+
+    osshar::Renderer renderer(options.width, options.height, options.offscreen);
+    if (!renderer.valid())
+    {
+        std::cerr << "osgsilhouetteshadow: cannot create a graphics context (is DISPLAY set? try xvfb-run)\n";
+        return 1;
+    }
+    renderer.setSceneData(root.get());
+    renderer.setView(scene.view);
+    const osshar::FrameTiming timing = renderer.timeFrames(options.warmup, options.frames);
+    std::printf("frame_ms_median=%.3f\n", timing.cpuMsMedian);
+    if (timing.gpuMsMedian >= 0.0) std::printf("gpu_ms_median=%.3f\n", timing.gpuMsMedian);
+    if (technique)
+    {
+        const SilhouetteShadowTechnique::Statistics s = technique->getStatistics();
+        std::printf("lights_found=%u lights_shadowed=%u shadow_passes=%u\n", s.lightsFound, s.lightsShadowed,
+                    s.shadowPasses);
+    }
+
+    if (!options.out.empty())
+    {
+        osg::ref_ptr<osg::Image> color = renderer.renderAndCapture();
+        if (!osgDB::writeImageFile(*color, options.out)) std::cerr << "cannot write " << options.out << "\n";
+    }
+    const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+    int status = 0;
+    for (unsigned int i = 0; i < scene.lights.size(); ++i)
+    {
+        ossref::Mask mask, reference;
+        if (!options.mask.empty() || !options.compare.empty() || !options.diff.empty())
+        {
+            if (!technique)
+            {
+                std::cerr << "osgsilhouetteshadow: --mask needs one of this project's modes\n";
+                return 1;
+            }
+            mask = renderMask(renderer, *technique, i);
+            if (!options.mask.empty() && !ossref::writeMask(mask, perLightName(options.mask, i)))
+                std::cerr << "cannot write " << perLightName(options.mask, i) << "\n", status = 1;
+        }
+        if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
+        {
+            reference = ossref::computeReferenceMask(*scene.content, refCamera, osshar::referenceLight(scene.lights[i]));
+            if (!options.reference.empty()) ossref::writeMask(reference, perLightName(options.reference, i));
+        }
+        if (mask.empty() || reference.empty()) continue;
+        const ossref::Comparison c = ossref::compareMasks(mask, reference);
+        if (!c.valid)
+        {
+            std::cerr << "osgsilhouetteshadow: cannot compare: " << c.error << "\n";
+            status = 1;
+            continue;
+        }
+        std::printf("light=%u geometry_pixels=%lld wrong_pixels=%lld wrong_pct=%.4f coverage_mismatch=%lld\n", i,
+                    c.geometryPixels, c.wrongPixels, c.wrongPct, c.coverageMismatch);
+        if (!options.diff.empty()) osgDB::writeImageFile(*ossref::diffImage(mask, reference), perLightName(options.diff, i));
+    }
+    return status;
+}

@@ -1,0 +1,26 @@
+// Closed, welded triangle meshes generated in code, with per-vertex normals.
+#ifndef OSS_HARNESS_MESHES_H
+#define OSS_HARNESS_MESHES_H
+
+#include <osg/Geometry>
+
+namespace osshar {
+
+/** An axis-aligned box, centre c, full extents size; 24 vertices (flat faces), 12 triangles. */
+osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& c, const osg::Vec3& size);
+
+/** A closed cylinder along z from base centre c, radius r, height h, with `segments` sides. */
+osg::ref_ptr<osg::Geometry> makeCylinder(const osg::Vec3& c, float r, float h, unsigned int segments);
+
+/** A UV sphere, centre c, radius r (slices around z, stacks from pole to pole). */
+osg::ref_ptr<osg::Geometry> makeSphere(const osg::Vec3& c, float r, unsigned int slices, unsigned int stacks);
+
+/** A torus around the z axis: major radius R, minor radius r. */
+osg::ref_ptr<osg::Geometry> makeTorus(const osg::Vec3& c, float R, float r, unsigned int major, unsigned int minor);
+
+/** A square in the plane z = height, facing +z, of side `side` centred on (cx, cy). */
+osg::ref_ptr<osg::Geometry> makeGround(float cx, float cy, float side, float height = 0.0f);
+
+} // namespace osshar
+
+#endif

@@ -1,0 +1,171 @@
+#include "Offscreen.h"
+
+#include <osg/DisplaySettings>
+#include <osg/GLExtensions>
+#include <osg/Timer>
+
+#include <algorithm>
+
+namespace osshar {
+
+namespace {
+
+class NoSwap : public osg::GraphicsContext::SwapCallback
+{
+public:
+    void swapBuffersImplementation(osg::GraphicsContext*) override {}
+};
+
+double median(std::vector<double> v)
+{
+    if (v.empty()) return -1.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+} // namespace
+
+/** Initial and final draw callbacks: a GL_TIME_ELAPSED query around the frame, glFinish,
+ *  and an optional read-back. */
+struct Renderer::DrawHooks : public osg::Referenced
+{
+    struct Begin : public osg::Camera::DrawCallback
+    {
+        explicit Begin(DrawHooks* h) : hooks(h) {}
+        void operator()(osg::RenderInfo& ri) const override { hooks->begin(ri); }
+        DrawHooks* hooks;
+    };
+    struct End : public osg::Camera::DrawCallback
+    {
+        explicit End(DrawHooks* h) : hooks(h) {}
+        void operator()(osg::RenderInfo& ri) const override { hooks->end(ri); }
+        DrawHooks* hooks;
+    };
+
+    void begin(osg::RenderInfo& ri)
+    {
+        osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
+        if (!ext || !ext->glGenQueries || !ext->glBeginQuery) return;
+        if (!query) ext->glGenQueries(1, &query);
+        ext->glBeginQuery(GL_TIME_ELAPSED, query);
+        queryActive = true;
+    }
+
+    void end(osg::RenderInfo& ri)
+    {
+        osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
+        if (queryActive && ext)
+        {
+            ext->glEndQuery(GL_TIME_ELAPSED);
+            glFinish();
+            GLuint64 ns = 0;
+            ext->glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+            lastGpuMs = ++queriesDone > 1 ? double(ns) * 1e-6 : -1.0; // the first result is garbage
+            queryActive = false;
+        }
+        else
+            glFinish();
+        if (capture)
+        {
+            glReadBuffer(GL_BACK);
+            capture->readPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE);
+        }
+    }
+
+    int width = 0, height = 0;
+    GLuint query = 0;
+    bool queryActive = false;
+    int queriesDone = 0;
+    double lastGpuMs = -1.0;
+    osg::ref_ptr<osg::Image> capture;
+};
+
+Renderer::Renderer(int width, int height, bool offscreen) : _width(width), _height(height)
+{
+    osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
+    _viewer = new osgViewer::Viewer;
+    _viewer->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    _viewer->setLightingMode(osg::View::NO_LIGHT);
+    _viewer->setKeyEventSetsDone(0);
+
+    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+    traits->readDISPLAY();
+    traits->setUndefinedScreenDetailsToDefaultScreen();
+    traits->x = 0, traits->y = 0, traits->width = width, traits->height = height;
+    traits->windowDecoration = !offscreen;
+    traits->doubleBuffer = true;
+    traits->pbuffer = offscreen;
+    traits->stencil = 8;
+    traits->depth = 24;
+    traits->alpha = 8;
+    traits->sharedContext = nullptr;
+    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits.get());
+    if (!gc.valid()) return;
+    if (offscreen) gc->setSwapCallback(new NoSwap);
+
+    osg::Camera* camera = _viewer->getCamera();
+    camera->setGraphicsContext(gc.get());
+    camera->setViewport(0, 0, width, height);
+    const GLenum buffer = traits->doubleBuffer ? GL_BACK : GL_FRONT;
+    camera->setDrawBuffer(buffer);
+    camera->setReadBuffer(buffer);
+
+    _hooks = new DrawHooks;
+    _hooks->width = width, _hooks->height = height;
+    camera->setInitialDrawCallback(new DrawHooks::Begin(_hooks.get()));
+    camera->setFinalDrawCallback(new DrawHooks::End(_hooks.get()));
+    _viewer->realize();
+}
+
+Renderer::~Renderer() = default;
+
+bool Renderer::valid() const
+{
+    return _viewer->getCamera()->getGraphicsContext() != nullptr && _viewer->isRealized();
+}
+
+void Renderer::setSceneData(osg::Node* node)
+{
+    _viewer->setSceneData(node);
+}
+
+void Renderer::setView(const View& view)
+{
+    osg::Camera* camera = _viewer->getCamera();
+    camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
+    camera->setProjectionMatrixAsPerspective(view.fovy, double(_width) / double(_height), 0.1, 1000.0);
+}
+
+FrameTiming Renderer::timeFrames(int warmup, int frames)
+{
+    for (int i = 0; i < warmup; ++i) _viewer->frame();
+    std::vector<double> cpu, gpu;
+    for (int i = 0; i < frames; ++i)
+    {
+        const osg::Timer_t t0 = osg::Timer::instance()->tick();
+        _viewer->frame();
+        cpu.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
+        if (_hooks->lastGpuMs >= 0.0) gpu.push_back(_hooks->lastGpuMs);
+    }
+    FrameTiming t;
+    t.frames = frames;
+    t.cpuMsMedian = median(cpu);
+    t.gpuMsMedian = median(gpu);
+    return t;
+}
+
+osg::ref_ptr<osg::Image> Renderer::renderAndCapture(const osg::Vec4& clearColor)
+{
+    osg::Camera* camera = _viewer->getCamera();
+    const osg::Vec4 previous = camera->getClearColor();
+    camera->setClearColor(clearColor);
+    _hooks->capture = new osg::Image;
+    _viewer->frame();
+    osg::ref_ptr<osg::Image> image = _hooks->capture;
+    _hooks->capture = nullptr;
+    camera->setClearColor(previous);
+    return image;
+}
+
+} // namespace osshar

@@ -1,0 +1,56 @@
+// A viewer that renders offscreen (pbuffer) or in a window, times frames and reads pixels back.
+#ifndef OSS_HARNESS_OFFSCREEN_H
+#define OSS_HARNESS_OFFSCREEN_H
+
+#include "Scenes.h"
+
+#include <osg/Image>
+#include <osgViewer/Viewer>
+
+#include <memory>
+#include <vector>
+
+namespace osshar {
+
+struct FrameTiming
+{
+    int frames = 0;
+    double cpuMsMedian = 0.0; ///< wall time of viewer.frame() with glFinish, median
+    double gpuMsMedian = -1.0;///< GL_TIME_ELAPSED of the whole frame, median; -1 when unknown
+};
+
+class Renderer
+{
+public:
+    /** A viewer of width x height with 8 stencil bits, single threaded, no headlight.
+     *  offscreen: a pbuffer (else a window). */
+    Renderer(int width, int height, bool offscreen);
+    ~Renderer();
+
+    /** Whether a graphics context could be created. */
+    bool valid() const;
+
+    osgViewer::Viewer& viewer() { return *_viewer; }
+
+    void setSceneData(osg::Node* node);
+    void setView(const View& view);
+
+    /** Renders warmup frames, then frames timed frames. */
+    FrameTiming timeFrames(int warmup, int frames);
+
+    /** Renders one frame with the given clear colour and returns its RGB pixels (bottom row first). */
+    osg::ref_ptr<osg::Image> renderAndCapture(const osg::Vec4& clearColor = osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f));
+
+    int width() const { return _width; }
+    int height() const { return _height; }
+
+private:
+    struct DrawHooks;
+    int _width, _height;
+    osg::ref_ptr<osgViewer::Viewer> _viewer;
+    osg::ref_ptr<DrawHooks> _hooks;
+};
+
+} // namespace osshar
+
+#endif

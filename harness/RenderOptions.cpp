@@ -1,0 +1,95 @@
+#include "RenderOptions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace osshar {
+
+namespace {
+
+bool readVec3(osg::ArgumentParser& a, const char* name, std::optional<osg::Vec3d>& out)
+{
+    double x, y, z;
+    if (!a.read(name, x, y, z)) return false;
+    out = osg::Vec3d(x, y, z);
+    return true;
+}
+
+bool finite(const osg::Vec3d& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+} // namespace
+
+bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
+{
+    a.read("--scene", o.scene);
+    a.read("--mode", o.mode);
+    int mapSize = static_cast<int>(o.mapSize);
+    while (a.read("--map-size", mapSize)) {}
+    if (mapSize < 1)
+    {
+        error = "--map-size must be at least 1";
+        return false;
+    }
+    o.mapSize = static_cast<unsigned int>(mapSize);
+    a.read("--size", o.width, o.height);
+    if (o.width < 1 || o.height < 1)
+    {
+        error = "--size needs a positive width and height";
+        return false;
+    }
+    readVec3(a, "--eye", o.eye);
+    readVec3(a, "--center", o.center);
+    readVec3(a, "--up", o.up);
+    double fovy;
+    if (a.read("--fovy", fovy)) o.fovy = fovy;
+    for (bool more = true; more;)
+    {
+        std::optional<osg::Vec3d> v;
+        more = false;
+        if (readVec3(a, "--light-dir", v)) o.lights.push_back({true, *v}), more = true;
+        if (readVec3(a, "--light-pos", v)) o.lights.push_back({false, *v}), more = true;
+    }
+    for (const LightArg& l : o.lights)
+        if (!finite(l.vector) || (l.directional && l.vector.length2() == 0.0))
+        {
+            error = "--light-dir/--light-pos need finite values and a non-zero direction";
+            return false;
+        }
+    a.read("--frames", o.frames);
+    a.read("--warmup", o.warmup);
+    o.frames = std::max(1, o.frames);
+    o.warmup = std::max(0, o.warmup);
+    a.read("--out", o.out);
+    a.read("--mask", o.mask);
+    a.read("--compare", o.compare);
+    a.read("--reference", o.reference);
+    a.read("--diff", o.diff);
+    if (a.read("--offscreen")) o.offscreen = true;
+    for (int i = 1; i < a.argc(); ++i)
+    {
+        if (a.isOption(i)) continue;
+        o.file = a[i];
+        a.remove(i);
+        break;
+    }
+    return true;
+}
+
+std::string renderOptionsUsage(const std::string& program)
+{
+    std::ostringstream s;
+    s << program << " [FILE] [--scene default|spheres|poles|cubes]\n"
+      << "    [--mode shadowmap|silhouette|hybrid|volume|none|osgShadow:ShadowMap|osgShadow:SoftShadowMap|\n"
+      << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap]\n"
+      << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"
+      << "    [--light-dir X Y Z | --light-pos X Y Z]... [--frames N] [--warmup N]\n"
+      << "    [--out color.png] [--mask mask.png] [--offscreen]\n"
+      << "    [--reference ref.png] [--compare ref.png] [--diff diff.png]\n";
+    return s.str();
+}
+
+} // namespace osshar

@@ -1,0 +1,51 @@
+// The renderer command line of MEASURE.md, shared by the renderer, the benchmark and tests.
+#ifndef OSS_HARNESS_RENDEROPTIONS_H
+#define OSS_HARNESS_RENDEROPTIONS_H
+
+#include "Scenes.h"
+
+#include <osg/ArgumentParser>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace osshar {
+
+/** A light given on the command line: --light-dir X Y Z (toward the light) or --light-pos X Y Z. */
+struct LightArg
+{
+    bool directional = true;
+    osg::Vec3d vector;
+};
+
+struct RenderOptions
+{
+    std::string file;                 ///< model file; empty: the built-in scene `scene`
+    std::string scene = "default";    ///< --scene NAME (built-in scenes)
+    std::string mode = "shadowmap";   ///< --mode: shadowmap|silhouette|hybrid|volume|none|osgShadow:<Technique>
+    unsigned int mapSize = 2048;      ///< --map-size N
+    int width = 1024, height = 768;   ///< --size W H
+    std::optional<osg::Vec3d> eye, center, up;
+    std::optional<double> fovy;
+    std::vector<LightArg> lights;     ///< --light-dir / --light-pos (repeatable)
+    int frames = 20;                  ///< --frames N: timed frames
+    int warmup = 3;                   ///< --warmup N
+    std::string out, mask;            ///< --out color.png, --mask mask.png
+    bool offscreen = false;           ///< --offscreen
+    std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
+    std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
+    std::string diff;                 ///< --diff diff.png: red/green diff against the reference
+    std::string stats;                ///< --stats: print the technique's statistics
+};
+
+/** Reads the options from arguments (removing them). Returns false with a message in error
+ *  on a malformed value. The first non-option argument is taken as the file. */
+bool parseRenderOptions(osg::ArgumentParser& arguments, RenderOptions& options, std::string& error);
+
+/** The usage text of those options. */
+std::string renderOptionsUsage(const std::string& program);
+
+} // namespace osshar
+
+#endif

@@ -1,0 +1,54 @@
+// Built-in test scenes and the lights and cameras they come with.
+#ifndef OSS_HARNESS_SCENES_H
+#define OSS_HARNESS_SCENES_H
+
+#include <osg/Group>
+#include <osg/LightSource>
+
+#include <string>
+#include <vector>
+
+namespace osshar {
+
+/** A camera as OSG's lookAt + perspective describe it. */
+struct View
+{
+    osg::Vec3d eye, center, up{0, 0, 1};
+    double fovy = 40.0;
+};
+
+/** A scene (its light sources inside) and the view it is meant to be seen from. */
+struct Scene
+{
+    std::string name;
+    osg::ref_ptr<osg::Group> root;
+    View view;
+};
+
+/** Names of the built-in scenes: "default", "spheres", "poles", "cubes". */
+std::vector<std::string> sceneNames();
+
+/** A built-in scene by name; root is null for an unknown name. */
+Scene createScene(const std::string& name);
+
+/** A LightSource holding GL light `lightNum`: directional toward `towardLight` (w = 0) or at a
+ *  position (w = 1), ambient 0.2, diffuse 0.8, specular 0.3. */
+osg::ref_ptr<osg::LightSource> makeLight(const osg::Vec4& position, int lightNum = 0);
+
+/** A LightSource in a scene with the matrix from its local frame to the scene's root. */
+struct LightInScene
+{
+    osg::LightSource* source = nullptr;
+    osg::Matrixd localToWorld;
+};
+
+/** Every LightSource below root that carries an osg::Light, in traversal order. */
+std::vector<LightInScene> findLights(osg::Node* root);
+
+/** The view osgviewer's home position would give a model: from -y and above, at a distance
+ *  that frames the bounding sphere. */
+View defaultView(const osg::BoundingSphere& bound);
+
+} // namespace osshar
+
+#endif
