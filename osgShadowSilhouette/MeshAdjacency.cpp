@@ -1,0 +1,351 @@
+/* -*-c++-*- osgShadowSilhouette - hard shadows for OpenSceneGraph
+ *
+ * Distributed under the terms of the OpenSceneGraph Public License (OSGPL).
+ */
+
+#include <osgShadowSilhouette/MeshAdjacency>
+#include <osgShadowSilhouette/HalfEdgeMesh>
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <osg/Notify>
+#include <osg/TriangleIndexFunctor>
+
+#include <mutex>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <unordered_map>
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+const std::uint32_t kInvalid = std::numeric_limits<std::uint32_t>::max();
+
+struct IndexCollector
+{
+    std::vector<std::uint32_t>* indices = nullptr;
+    void operator()(unsigned int a, unsigned int b, unsigned int c)
+    {
+        indices->push_back(a);
+        indices->push_back(b);
+        indices->push_back(c);
+    }
+};
+
+template<class ArrayT>
+void copyPositions(const osg::Array& array, std::vector<osg::Vec3d>& out)
+{
+    const ArrayT& typed = static_cast<const ArrayT&>(array);
+    out.reserve(typed.size());
+    for (const auto& v : typed)
+    {
+        constexpr int n = ArrayT::ElementDataType::num_components;
+        osg::Vec3d p;
+        for (int i = 0; i < 3 && i < n; ++i) p[i] = v[i];
+        if constexpr (n == 4) p /= v[3];
+        out.push_back(p);
+    }
+}
+
+bool copyVertexArray(const osg::Array* array, std::vector<osg::Vec3d>& out)
+{
+    if (!array) return false;
+    switch (array->getType())
+    {
+        case osg::Array::Vec2ArrayType:  copyPositions<osg::Vec2Array>(*array, out); return true;
+        case osg::Array::Vec3ArrayType:  copyPositions<osg::Vec3Array>(*array, out); return true;
+        case osg::Array::Vec4ArrayType:  copyPositions<osg::Vec4Array>(*array, out); return true;
+        case osg::Array::Vec2dArrayType: copyPositions<osg::Vec2dArray>(*array, out); return true;
+        case osg::Array::Vec3dArrayType: copyPositions<osg::Vec3dArray>(*array, out); return true;
+        case osg::Array::Vec4dArrayType: copyPositions<osg::Vec4dArray>(*array, out); return true;
+        default: return false;
+    }
+}
+
+bool isFinite(const osg::Vec3d& p)
+{
+    return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+}
+
+/** Merges vertices closer than a distance on a hashed grid whose cells are twice that
+ *  distance: a neighbour within the distance lies in one of 8 cells. */
+class VertexWelder
+{
+public:
+    VertexWelder(const osg::BoundingBoxd& box, double distance, std::size_t expected)
+        : _origin(box._min), _distance(distance)
+    {
+        double extent = std::max(box.xMax() - box.xMin(),
+                                 std::max(box.yMax() - box.yMin(), box.zMax() - box.zMin()));
+        // at most 2^20 cells per axis so that the three cell indices pack into 64 bits
+        _cell = std::max(2.0 * distance, extent / double(1 << 20));
+        if (_cell <= 0.0) _cell = 1.0;
+        _heads.reserve(expected);
+        _next.reserve(expected);
+    }
+
+    std::uint32_t weld(const osg::Vec3d& p, std::vector<osg::Vec3d>& welded)
+    {
+        osg::Vec3d g = (p - _origin) / _cell;
+        long long base[3] = { (long long)std::floor(g.x()), (long long)std::floor(g.y()),
+                              (long long)std::floor(g.z()) };
+        int step[3];
+        for (int i = 0; i < 3; ++i) step[i] = (g[i] - double(base[i]) < 0.5) ? -1 : 1;
+        for (int n = 0; n < 8; ++n)
+        {
+            std::uint32_t found = search(key(base[0] + ((n & 1) ? step[0] : 0),
+                                             base[1] + ((n & 2) ? step[1] : 0),
+                                             base[2] + ((n & 4) ? step[2] : 0)), p, welded);
+            if (found != kInvalid) return found;
+        }
+        std::uint32_t id = static_cast<std::uint32_t>(welded.size());
+        welded.push_back(p);
+        auto inserted = _heads.emplace(key(base[0], base[1], base[2]), id);
+        _next.push_back(inserted.second ? kInvalid : inserted.first->second);
+        inserted.first->second = id;
+        return id;
+    }
+
+private:
+    static std::uint64_t key(long long x, long long y, long long z)
+    {
+        const std::uint64_t mask = (1u << 21) - 1;
+        return (std::uint64_t(x + 1) & mask) | ((std::uint64_t(y + 1) & mask) << 21) |
+               ((std::uint64_t(z + 1) & mask) << 42);
+    }
+
+    std::uint32_t search(std::uint64_t k, const osg::Vec3d& p,
+                         const std::vector<osg::Vec3d>& welded) const
+    {
+        auto it = _heads.find(k);
+        if (it == _heads.end()) return kInvalid;
+        const double limit = _distance * _distance;
+        for (std::uint32_t id = it->second; id != kInvalid; id = _next[id])
+            if ((welded[id] - p).length2() <= limit) return id;
+        return kInvalid;
+    }
+
+    osg::Vec3d _origin;
+    double _distance;
+    double _cell;
+    std::unordered_map<std::uint64_t, std::uint32_t> _heads;
+    std::vector<std::uint32_t> _next;
+};
+
+/** Welded vertices and the triangles that survive welding (three ids each). */
+struct WeldedSoup
+{
+    std::vector<osg::Vec3d> positions;
+    std::vector<std::uint32_t> indices;
+};
+
+std::vector<char> markReferenced(const TriangleSoup& soup)
+{
+    std::vector<char> referenced(soup.positions.size(), 0);
+    for (std::uint32_t i : soup.indices)
+        if (i < referenced.size()) referenced[i] = 1;
+    return referenced;
+}
+
+void weldSoup(const TriangleSoup& soup, double tolerance, WeldedSoup& out, MeshBuildReport& report)
+{
+    std::vector<char> referenced = markReferenced(soup);
+    osg::BoundingBoxd box;
+    for (std::size_t i = 0; i < soup.positions.size(); ++i)
+    {
+        if (!referenced[i]) continue;
+        if (isFinite(soup.positions[i])) box.expandBy(soup.positions[i]);
+        else ++report.nonFiniteVertices;
+    }
+    report.weldDistance = box.valid() ? tolerance * (box._max - box._min).length() : 0.0;
+    VertexWelder welder(box, report.weldDistance, soup.positions.size());
+    std::vector<std::uint32_t> remap(soup.positions.size(), kInvalid);
+    for (std::size_t i = 0; i < soup.positions.size(); ++i)
+        if (referenced[i] && isFinite(soup.positions[i]))
+            remap[i] = welder.weld(soup.positions[i], out.positions);
+
+    out.indices.reserve(soup.indices.size());
+    for (std::size_t t = 0; t + 2 < soup.indices.size(); t += 3)
+    {
+        std::uint32_t v[3];
+        bool finite = true, inRange = true;
+        for (int k = 0; k < 3; ++k)
+        {
+            std::uint32_t i = soup.indices[t + k];
+            inRange = inRange && i < remap.size();
+            v[k] = inRange ? remap[i] : kInvalid;
+            finite = finite && v[k] != kInvalid;
+        }
+        if (!inRange) { ++report.outOfRangeTriangles; continue; }
+        if (!finite) { ++report.nonFiniteTriangles; continue; }
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) { ++report.degenerateTriangles; continue; }
+        out.indices.insert(out.indices.end(), v, v + 3);
+    }
+}
+
+/** Adds the welded triangles to OpenMesh; faces it refuses get their own vertex copies. */
+void fillHalfEdgeMesh(const WeldedSoup& soup, HalfEdgeMesh& mesh, MeshBuildReport& report)
+{
+    mesh.clear();
+    mesh.reserve(soup.positions.size(), soup.indices.size() / 2, soup.indices.size() / 3);
+    std::vector<HalfEdgeMesh::VertexHandle> handles;
+    handles.reserve(soup.positions.size());
+    for (const osg::Vec3d& p : soup.positions)
+        handles.push_back(mesh.add_vertex(HalfEdgeMesh::Point(p.x(), p.y(), p.z())));
+
+    std::vector<std::size_t> refused;
+    {
+        // OpenMesh reports each refused face on omerr(); we count them instead. The
+        // stream switch is process-wide, hence the lock.
+        static std::mutex quietMutex;
+        std::lock_guard<std::mutex> lock(quietMutex);
+        const bool wasEnabled = ::omerr().is_enabled();
+        ::omerr().disable();
+        for (std::size_t t = 0; t < soup.indices.size(); t += 3)
+        {
+            HalfEdgeMesh::FaceHandle f = mesh.add_face(handles[soup.indices[t]],
+                                                       handles[soup.indices[t + 1]],
+                                                       handles[soup.indices[t + 2]]);
+            if (!f.is_valid()) refused.push_back(t);
+        }
+        if (wasEnabled) ::omerr().enable();
+    }
+    for (std::size_t t : refused)
+    {
+        HalfEdgeMesh::VertexHandle copies[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            const HalfEdgeMesh::Point p = mesh.point(handles[soup.indices[t + k]]); // copy: add_vertex may reallocate
+            copies[k] = mesh.add_vertex(p);
+        }
+        mesh.add_face(copies[0], copies[1], copies[2]);
+    }
+    report.nonManifoldFaces = refused.size();
+    mesh.update_face_normals();
+}
+
+osg::Vec4d facePlane(const osg::Vec3d& a, const osg::Vec3d& b, const osg::Vec3d& c)
+{
+    osg::Vec3d n = (b - a) ^ (c - a);
+    return osg::Vec4d(n, -(n * a));
+}
+
+void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
+{
+    adjacency.positions.resize(mesh.n_vertices());
+    for (auto v : mesh.vertices())
+    {
+        const HalfEdgeMesh::Point& p = mesh.point(v);
+        adjacency.positions[v.idx()].set(float(p[0]), float(p[1]), float(p[2]));
+    }
+    adjacency.faces.resize(mesh.n_faces());
+    adjacency.planes.resize(mesh.n_faces());
+    for (auto f : mesh.faces())
+    {
+        MeshTriangle& tri = adjacency.faces[f.idx()];
+        int k = 0;
+        for (auto v : mesh.fv_range(f)) tri.v[k++] = static_cast<std::uint32_t>(v.idx());
+        // planes from the float positions the renderer draws, in double
+        const osg::Vec3f* p = adjacency.positions.data();
+        adjacency.planes[f.idx()] = facePlane(p[tri.v[0]], p[tri.v[1]], p[tri.v[2]]);
+    }
+}
+
+void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
+{
+    adjacency.edges.clear();
+    adjacency.boundaryEdges.clear();
+    adjacency.edges.reserve(mesh.n_edges());
+    for (auto e : mesh.edges())
+    {
+        auto h0 = mesh.halfedge_handle(e, 0);
+        auto h1 = mesh.halfedge_handle(e, 1);
+        if (mesh.is_boundary(h0)) std::swap(h0, h1);
+        if (mesh.is_boundary(h0)) continue; // isolated edge: no face at all
+        std::uint32_t f0 = mesh.face_handle(h0).idx();
+        std::uint32_t v0 = mesh.from_vertex_handle(h0).idx();
+        std::uint32_t v1 = mesh.to_vertex_handle(h0).idx();
+        if (mesh.is_boundary(h1))
+            adjacency.boundaryEdges.push_back(BoundaryEdge{ f0, v0, v1 });
+        else
+            adjacency.edges.push_back(InteriorEdge{ f0, std::uint32_t(mesh.face_handle(h1).idx()), v0, v1 });
+    }
+    adjacency.edges.shrink_to_fit();
+}
+
+void warnAboutInput(const std::string& name, const MeshBuildReport& report)
+{
+    if (report.nonFiniteVertices > 0)
+        OSG_WARN << "osgShadowSilhouette: " << name << " has " << report.nonFiniteVertices
+                 << " vertices with NaN or infinite coordinates; they are refused and the "
+                 << report.nonFiniteTriangles << " triangles using them cast no shadow."
+                 << std::endl;
+    if (report.nonManifoldFaces > 0)
+        OSG_INFO << "osgShadowSilhouette: " << name << " has " << report.nonManifoldFaces
+                 << " non-manifold faces, kept as separate open faces." << std::endl;
+}
+
+}
+
+std::size_t MeshAdjacency::memoryBytes() const
+{
+    return positions.capacity() * sizeof(osg::Vec3f) + faces.capacity() * sizeof(MeshTriangle) +
+           planes.capacity() * sizeof(osg::Vec4d) + edges.capacity() * sizeof(InteriorEdge) +
+           boundaryEdges.capacity() * sizeof(BoundaryEdge) +
+           nonManifoldFaces.capacity() * sizeof(std::uint32_t);
+}
+
+std::string describeGeometry(const osg::Geometry& geometry)
+{
+    std::ostringstream out;
+    if (!geometry.getName().empty()) out << "geometry \"" << geometry.getName() << "\"";
+    else out << "unnamed osg::Geometry " << static_cast<const void*>(&geometry);
+    return out.str();
+}
+
+bool collectTriangles(const osg::Geometry& geometry, TriangleSoup& soup)
+{
+    soup.positions.clear();
+    soup.indices.clear();
+    if (!copyVertexArray(geometry.getVertexArray(), soup.positions)) return false;
+    osg::TriangleIndexFunctor<IndexCollector> functor;
+    functor.indices = &soup.indices;
+    for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
+        geometry.getPrimitiveSet(i)->accept(functor);
+    return true;
+}
+
+void buildMeshAdjacency(const TriangleSoup& soup, const MeshBuildOptions& options,
+                        const std::string& name, MeshAdjacency& adjacency,
+                        HalfEdgeMesh* halfEdgeMesh)
+{
+    adjacency = MeshAdjacency();
+    MeshBuildReport& report = adjacency.report;
+    report.inputTriangles = soup.indices.size() / 3;
+
+    WeldedSoup welded;
+    weldSoup(soup, std::max(0.0, options.weldTolerance), welded, report);
+
+    HalfEdgeMesh local;
+    HalfEdgeMesh& mesh = halfEdgeMesh ? *halfEdgeMesh : local;
+    fillHalfEdgeMesh(welded, mesh, report);
+    flattenFaces(mesh, adjacency);
+    flattenEdges(mesh, adjacency);
+    std::size_t firstRefused = mesh.n_faces() - report.nonManifoldFaces;
+    for (std::size_t f = firstRefused; f < mesh.n_faces(); ++f)
+        adjacency.nonManifoldFaces.push_back(static_cast<std::uint32_t>(f));
+    warnAboutInput(name, report);
+}
+
+void buildMeshAdjacency(const osg::Geometry& geometry, const MeshBuildOptions& options,
+                        MeshAdjacency& adjacency, HalfEdgeMesh* halfEdgeMesh)
+{
+    TriangleSoup soup;
+    collectTriangles(geometry, soup);
+    buildMeshAdjacency(soup, options, describeGeometry(geometry), adjacency, halfEdgeMesh);
+}
+
+}

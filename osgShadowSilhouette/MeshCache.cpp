@@ -1,0 +1,134 @@
+/* -*-c++-*- osgShadowSilhouette - hard shadows for OpenSceneGraph
+ *
+ * Distributed under the terms of the OpenSceneGraph Public License (OSGPL).
+ */
+
+#include <osgShadowSilhouette/MeshCache>
+#include <osgShadowSilhouette/HalfEdgeMesh>
+
+#include <OpenThreads/ScopedLock>
+
+namespace osgShadowSilhouette {
+
+typedef OpenThreads::ScopedLock<OpenThreads::Mutex> Lock;
+
+CachedMesh::CachedMesh() {}
+CachedMesh::~CachedMesh() {}
+
+MeshCache::MeshCache() {}
+MeshCache::~MeshCache() {}
+
+bool MeshCache::Signature::operator==(const Signature& other) const
+{
+    return vertices == other.vertices && verticesModified == other.verticesModified &&
+           primitives == other.primitives;
+}
+
+MeshCache::Signature MeshCache::signatureOf(const osg::Geometry& geometry)
+{
+    Signature s;
+    s.vertices = geometry.getVertexArray();
+    s.verticesModified = s.vertices ? s.vertices->getModifiedCount() : 0;
+    s.primitives.reserve(geometry.getNumPrimitiveSets());
+    for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
+    {
+        const osg::PrimitiveSet* p = geometry.getPrimitiveSet(i);
+        s.primitives.emplace_back(p, p ? p->getModifiedCount() : 0);
+    }
+    return s;
+}
+
+osg::ref_ptr<CachedMesh> MeshCache::build(const osg::Geometry& geometry) const
+{
+    MeshBuildOptions options;
+    bool keep;
+    {
+        Lock lock(_mutex);
+        options = _options;
+        keep = _keepHalfEdgeMesh;
+    }
+    osg::ref_ptr<CachedMesh> mesh = new CachedMesh;
+    if (keep) mesh->_halfEdgeMesh.reset(new HalfEdgeMesh);
+    buildMeshAdjacency(geometry, options, mesh->_adjacency, mesh->_halfEdgeMesh.get());
+    return mesh;
+}
+
+osg::ref_ptr<const CachedMesh> MeshCache::get(const osg::Geometry& geometry)
+{
+    Signature signature = signatureOf(geometry);
+    {
+        Lock lock(_mutex);
+        auto it = _entries.find(&geometry);
+        if (it != _entries.end() && it->second.geometry.get() == &geometry &&
+            it->second.signature == signature)
+            return it->second.mesh;
+    }
+    osg::ref_ptr<const CachedMesh> mesh = build(geometry);
+    Lock lock(_mutex);
+    Entry& entry = _entries[&geometry];
+    entry.geometry = &geometry;
+    entry.signature = signature;
+    entry.mesh = mesh;
+    ++_buildCount;
+    return mesh;
+}
+
+void MeshCache::setBuildOptions(const MeshBuildOptions& options)
+{
+    Lock lock(_mutex);
+    _options = options;
+}
+
+MeshBuildOptions MeshCache::getBuildOptions() const
+{
+    Lock lock(_mutex);
+    return _options;
+}
+
+void MeshCache::setKeepHalfEdgeMesh(bool keep)
+{
+    Lock lock(_mutex);
+    _keepHalfEdgeMesh = keep;
+}
+
+bool MeshCache::getKeepHalfEdgeMesh() const
+{
+    Lock lock(_mutex);
+    return _keepHalfEdgeMesh;
+}
+
+void MeshCache::remove(const osg::Geometry* geometry)
+{
+    Lock lock(_mutex);
+    _entries.erase(geometry);
+}
+
+void MeshCache::prune()
+{
+    Lock lock(_mutex);
+    for (auto it = _entries.begin(); it != _entries.end();)
+    {
+        if (it->second.geometry.valid()) ++it;
+        else it = _entries.erase(it);
+    }
+}
+
+void MeshCache::clear()
+{
+    Lock lock(_mutex);
+    _entries.clear();
+}
+
+std::size_t MeshCache::size() const
+{
+    Lock lock(_mutex);
+    return _entries.size();
+}
+
+std::size_t MeshCache::getBuildCount() const
+{
+    Lock lock(_mutex);
+    return _buildCount;
+}
+
+}

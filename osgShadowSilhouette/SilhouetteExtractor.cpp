@@ -1,0 +1,224 @@
+/* -*-c++-*- osgShadowSilhouette - hard shadows for OpenSceneGraph
+ *
+ * Distributed under the terms of the OpenSceneGraph Public License (OSGPL).
+ */
+
+#include <osgShadowSilhouette/SilhouetteExtractor>
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+/** How each face casts: +1 as it is, -1 flipped, 0 not at all. */
+enum class CastMode
+{
+    CLOSED,          ///< lit +1, unlit 0, dark cap from the unlit faces
+    LIT_FACES_ONLY,  ///< lit +1, unlit 0, dark cap from the lit faces reversed
+    TWO_SIDED        ///< lit +1, unlit -1
+};
+
+CastMode castMode(bool closed, OpenCasterRule rule)
+{
+    if (closed) return CastMode::CLOSED;
+    return rule == OpenCasterRule::TWO_SIDED ? CastMode::TWO_SIDED : CastMode::LIT_FACES_ONLY;
+}
+
+void pushEdge(SilhouetteEdges& out, std::uint32_t a, std::uint32_t b, std::uint8_t multiplicity)
+{
+    out.vertexIndices.push_back(a);
+    out.vertexIndices.push_back(b);
+    out.multiplicity.push_back(multiplicity);
+}
+
+/** Edges between a lit and an unlit face, lit face on the left. The hot loop. */
+void extractInteriorEdges(const MeshAdjacency& mesh, std::uint8_t multiplicity,
+                          SilhouetteEdges& out)
+{
+    const std::uint8_t* lit = out.lit.data();
+    for (const InteriorEdge& e : mesh.edges)
+    {
+        const std::uint8_t a = lit[e.face0];
+        if (a == lit[e.face1]) continue;
+        if (a) pushEdge(out, e.v0, e.v1, multiplicity);
+        else pushEdge(out, e.v1, e.v0, multiplicity);
+    }
+}
+
+void extractBoundaryEdges(const MeshAdjacency& mesh, CastMode mode, SilhouetteEdges& out)
+{
+    const std::uint8_t* lit = out.lit.data();
+    for (const BoundaryEdge& e : mesh.boundaryEdges)
+    {
+        if (lit[e.face]) pushEdge(out, e.v0, e.v1, 1);
+        else if (mode == CastMode::TWO_SIDED) pushEdge(out, e.v1, e.v0, 1);
+    }
+}
+
+void fillEdgePositions(const MeshAdjacency& mesh, SilhouetteEdges& out)
+{
+    out.positions.resize(out.vertexIndices.size());
+    const osg::Vec3f* p = mesh.positions.data();
+    for (std::size_t i = 0; i < out.vertexIndices.size(); ++i)
+        out.positions[i] = p[out.vertexIndices[i]];
+}
+
+void fillVertices(const MeshAdjacency& mesh, const osg::Vec4d& light, ShadowVolume& out)
+{
+    const std::size_t n = mesh.positions.size();
+    out.vertices.resize(2 * n);
+    osg::Vec4f* near = out.vertices.data();
+    osg::Vec4f* far = near + n;
+    const osg::Vec3f* p = mesh.positions.data();
+    const osg::Vec3f l(light.x(), light.y(), light.z());
+    const bool directional = light.w() == 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        near[i].set(p[i].x(), p[i].y(), p[i].z(), 1.0f);
+        const osg::Vec3f d = directional ? -l : p[i] - l;
+        if (d.x() == 0.0f && d.y() == 0.0f && d.z() == 0.0f) far[i] = near[i];
+        else far[i].set(d.x(), d.y(), d.z(), 0.0f);
+    }
+}
+
+/** Side quad of edge a -> b (casting face on its left): (b, a, a'), (b, a', b'). */
+std::uint32_t* writeSides(const SilhouetteEdges& silhouette, std::uint32_t n, std::uint32_t* w)
+{
+    const std::uint32_t* v = silhouette.vertexIndices.data();
+    for (std::size_t e = 0; e < silhouette.multiplicity.size(); ++e)
+    {
+        const std::uint32_t a = v[2 * e], b = v[2 * e + 1];
+        for (std::uint8_t k = 0; k < silhouette.multiplicity[e]; ++k)
+        {
+            w[0] = b; w[1] = a; w[2] = a + n;
+            w[3] = b; w[4] = a + n; w[5] = b + n;
+            w += 6;
+        }
+    }
+    return w;
+}
+
+inline void writeTriangle(std::uint32_t*& w, std::uint32_t a, std::uint32_t b, std::uint32_t c)
+{
+    w[0] = a; w[1] = b; w[2] = c;
+    w += 3;
+}
+
+/** Writes the light cap at @p light and the dark cap at @p dark for every face. */
+void writeCaps(const MeshAdjacency& mesh, const std::uint8_t* lit, CastMode mode,
+               std::uint32_t n, std::uint32_t* light, std::uint32_t* dark)
+{
+    const MeshTriangle* faces = mesh.faces.data();
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    {
+        const std::uint32_t a = faces[f].v[0], b = faces[f].v[1], c = faces[f].v[2];
+        if (lit[f])
+        {
+            writeTriangle(light, a, b, c);
+            if (mode != CastMode::CLOSED) writeTriangle(dark, a + n, c + n, b + n);
+        }
+        else if (mode == CastMode::CLOSED)
+            writeTriangle(dark, a + n, b + n, c + n);
+        else if (mode == CastMode::TWO_SIDED)
+        {
+            writeTriangle(light, a, c, b);
+            writeTriangle(dark, a + n, b + n, c + n);
+        }
+    }
+}
+
+/** Number of faces in the light cap and in the dark cap. */
+void capSizes(CastMode mode, std::size_t faces, std::size_t lit, std::size_t& light, std::size_t& dark)
+{
+    switch (mode)
+    {
+        case CastMode::CLOSED:         light = lit;   dark = faces - lit; break;
+        case CastMode::LIT_FACES_ONLY: light = lit;   dark = lit;         break;
+        case CastMode::TWO_SIDED:      light = faces; dark = faces;       break;
+    }
+}
+
+}
+
+osg::Vec4d lightInObjectSpace(const HomogeneousLight& light, const osg::Matrixd& world)
+{
+    osg::Vec4d l = light.position * osg::Matrixd::inverse(world);
+    if (l.w() != 0.0) return osg::Vec4d(l.x() / l.w(), l.y() / l.w(), l.z() / l.w(), 1.0);
+    return l;
+}
+
+std::size_t SilhouetteExtractor::classifyFaces(const MeshAdjacency& mesh,
+                                               const osg::Vec4d& objectLight,
+                                               std::vector<std::uint8_t>& lit)
+{
+    const std::size_t count = mesh.planes.size();
+    lit.resize(count);
+    const osg::Vec4d* planes = mesh.planes.data();
+    std::uint8_t* out = lit.data();
+    const double lx = objectLight.x(), ly = objectLight.y(), lz = objectLight.z();
+    const double lw = objectLight.w();
+    std::size_t litCount = 0;
+    for (std::size_t f = 0; f < count; ++f)
+    {
+        const osg::Vec4d& p = planes[f];
+        const bool facing = p.x() * lx + p.y() * ly + p.z() * lz + p.w() * lw > 0.0;
+        out[f] = facing;
+        litCount += facing;
+    }
+    return litCount;
+}
+
+void SilhouetteExtractor::extract(const MeshAdjacency& mesh, const osg::Vec4d& objectLight,
+                                  SilhouetteEdges& out) const
+{
+    out.objectLight = objectLight;
+    out.closedCaster = mesh.isClosed();
+    out.rule = _openCasterRule;
+    out.vertexIndices.clear();
+    out.multiplicity.clear();
+    out.litFaceCount = classifyFaces(mesh, objectLight, out.lit);
+
+    const CastMode mode = castMode(out.closedCaster, _openCasterRule);
+    extractInteriorEdges(mesh, mode == CastMode::TWO_SIDED ? 2 : 1, out);
+    extractBoundaryEdges(mesh, mode, out);
+    fillEdgePositions(mesh, out);
+}
+
+void SilhouetteExtractor::extract(const MeshAdjacency& mesh, const HomogeneousLight& light,
+                                  const osg::Matrixd& world, SilhouetteEdges& out) const
+{
+    extract(mesh, lightInObjectSpace(light, world), out);
+}
+
+void SilhouetteExtractor::buildVolume(const MeshAdjacency& mesh, const SilhouetteEdges& silhouette,
+                                      ShadowVolume& out) const
+{
+    const CastMode mode = castMode(silhouette.closedCaster, silhouette.rule);
+    out.closedCaster = silhouette.closedCaster;
+    fillVertices(mesh, silhouette.objectLight, out);
+
+    std::size_t quads = 0;
+    for (std::uint8_t m : silhouette.multiplicity) quads += m;
+    std::size_t lightFaces = 0, darkFaces = 0;
+    capSizes(mode, mesh.faces.size(), silhouette.litFaceCount, lightFaces, darkFaces);
+
+    out.sides = IndexRange{ 0, std::uint32_t(6 * quads) };
+    out.lightCap = IndexRange{ out.sides.count, std::uint32_t(3 * lightFaces) };
+    out.darkCap = IndexRange{ out.lightCap.first + out.lightCap.count, std::uint32_t(3 * darkFaces) };
+    out.indices.resize(out.darkCap.first + out.darkCap.count);
+
+    const std::uint32_t n = std::uint32_t(mesh.positions.size());
+    std::uint32_t* base = out.indices.data();
+    writeSides(silhouette, n, base);
+    writeCaps(mesh, silhouette.lit.data(), mode, n, base + out.lightCap.first,
+              base + out.darkCap.first);
+}
+
+void SilhouetteExtractor::buildVolume(const MeshAdjacency& mesh, const HomogeneousLight& light,
+                                      const osg::Matrixd& world, SilhouetteEdges& silhouette,
+                                      ShadowVolume& out) const
+{
+    extract(mesh, light, world, silhouette);
+    buildVolume(mesh, silhouette, out);
+}
+
+}
