@@ -1,0 +1,153 @@
+// MeshCache: one mesh per geometry, rebuilt only when its arrays change.
+#include "test_mesh_shapes.h"
+
+#include <osgShadowSilhouette/HalfEdgeMesh>
+#include <osgShadowSilhouette/MeshCache>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+using namespace osgShadowSilhouette;
+using namespace meshtest;
+
+namespace {
+
+TEST(MeshCache, SecondLookupReturnsTheCachedMesh)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = cube();
+    osg::ref_ptr<const CachedMesh> first = cache->get(*g);
+    osg::ref_ptr<const CachedMesh> second = cache->get(*g);
+    EXPECT_EQ(first.get(), second.get());
+    EXPECT_EQ(1u, cache->getBuildCount());
+    EXPECT_EQ(12u, first->getAdjacency().faces.size());
+    ASSERT_NE(nullptr, first->getHalfEdgeMesh());
+    EXPECT_EQ(12u, first->getHalfEdgeMesh()->n_faces());
+}
+
+struct Change
+{
+    const char* name;
+    std::function<void(osg::Geometry&)> apply;
+    std::size_t facesAfter;
+};
+
+// each change must make the next lookup rebuild; the face count after it is counted by hand
+const std::vector<Change> kChanges = {
+    { "vertex_array_dirtied", [](osg::Geometry& g) {
+          auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
+          (*v)[6] = osg::Vec3f(2, 2, 2);
+          v->dirty();
+      }, 12 },
+    { "vertex_array_replaced", [](osg::Geometry& g) {
+          auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
+          g.setVertexArray(new osg::Vec3Array(v->begin(), v->end()));
+      }, 12 },
+    { "primitive_set_dirtied", [](osg::Geometry& g) {
+          auto* e = static_cast<osg::DrawElementsUInt*>(g.getPrimitiveSet(0));
+          e->resize(30); // drop the -x face
+          e->dirty();
+      }, 10 },
+    { "primitive_set_added", [](osg::Geometry& g) {
+          std::vector<unsigned int> extra = { 0, 1, 6 };
+          g.addPrimitiveSet(new osg::DrawElementsUInt(GL_TRIANGLES, extra.begin(), extra.end()));
+      }, 13 },
+    { "primitive_set_removed", [](osg::Geometry& g) { g.removePrimitiveSet(0, 1); }, 0 },
+};
+
+void PrintTo(const Change& c, std::ostream* os) { *os << c.name; }
+
+class CacheInvalidation : public ::testing::TestWithParam<Change> {};
+
+TEST_P(CacheInvalidation, RebuildsAfterTheChange)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = cube();
+    osg::ref_ptr<const CachedMesh> before = cache->get(*g);
+    GetParam().apply(*g);
+    osg::ref_ptr<const CachedMesh> after = cache->get(*g);
+    EXPECT_NE(before.get(), after.get());
+    EXPECT_EQ(2u, cache->getBuildCount());
+    EXPECT_EQ(GetParam().facesAfter, after->getAdjacency().faces.size());
+    EXPECT_EQ(12u, before->getAdjacency().faces.size()); // old readers keep their mesh
+    EXPECT_EQ(after.get(), cache->get(*g).get());
+    EXPECT_EQ(2u, cache->getBuildCount());
+}
+
+INSTANTIATE_TEST_SUITE_P(Changes, CacheInvalidation, ::testing::ValuesIn(kChanges),
+                         [](const ::testing::TestParamInfo<Change>& info) { return info.param.name; });
+
+TEST(MeshCache, UnrelatedChangesDoNotRebuild)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = cube();
+    cache->get(*g);
+    g->setColorArray(new osg::Vec4Array(1), osg::Array::BIND_OVERALL);
+    g->setName("renamed");
+    g->getOrCreateStateSet();
+    cache->get(*g);
+    EXPECT_EQ(1u, cache->getBuildCount());
+}
+
+TEST(MeshCache, PruneDropsEntriesOfDeletedGeometries)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> kept = cube();
+    osg::ref_ptr<osg::Geometry> dropped = tetrahedron();
+    osg::ref_ptr<const CachedMesh> held = cache->get(*dropped);
+    cache->get(*kept);
+    EXPECT_EQ(2u, cache->size());
+    dropped = nullptr;
+    cache->prune();
+    EXPECT_EQ(1u, cache->size());
+    EXPECT_EQ(4u, held->getAdjacency().faces.size()); // still valid for its holder
+    cache->remove(kept.get());
+    EXPECT_EQ(0u, cache->size());
+    cache->get(*kept);
+    cache->clear();
+    EXPECT_EQ(0u, cache->size());
+}
+
+TEST(MeshCache, OptionsApplyToMeshesBuiltAfterwards)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    cache->setKeepHalfEdgeMesh(false);
+    MeshBuildOptions options;
+    options.weldTolerance = 0.25;
+    cache->setBuildOptions(options);
+    EXPECT_FALSE(cache->getKeepHalfEdgeMesh());
+    EXPECT_EQ(0.25, cache->getBuildOptions().weldTolerance);
+    osg::ref_ptr<const CachedMesh> mesh = cache->get(*cube());
+    EXPECT_EQ(nullptr, mesh->getHalfEdgeMesh());
+    // 0.25 x diagonal 3.46 = 0.87 < edge length 2: nothing merges
+    EXPECT_EQ(8u, mesh->getAdjacency().positions.size());
+}
+
+TEST(MeshCache, ConcurrentLookupsAgree)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    std::vector<osg::ref_ptr<osg::Geometry>> geometries = { cube(), torus(24, 12), uvSphere(16, 8) };
+    const std::size_t expectedFaces[] = { 12, 576, 224 };
+    std::atomic<int> wrong{ 0 };
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&] {
+            for (int i = 0; i < 200; ++i)
+            {
+                std::size_t k = std::size_t(i) % geometries.size();
+                if (cache->get(*geometries[k])->getAdjacency().faces.size() != expectedFaces[k]) ++wrong;
+            }
+        });
+    for (auto& t : threads) t.join();
+    EXPECT_EQ(0, wrong.load());
+    EXPECT_EQ(3u, cache->size());
+    std::size_t builds = cache->getBuildCount();
+    EXPECT_GE(builds, 3u);
+    EXPECT_LE(builds, 12u); // at worst each thread built each mesh once
+    for (auto& g : geometries) cache->get(*g);
+    EXPECT_EQ(builds, cache->getBuildCount());
+}
+
+}
