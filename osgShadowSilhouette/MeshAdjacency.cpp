@@ -256,9 +256,11 @@ void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
 
 void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
 {
-    adjacency.edges.clear();
+    adjacency.edgeFaces.clear();
+    adjacency.edgeVertices.clear();
     adjacency.boundaryEdges.clear();
-    adjacency.edges.reserve(mesh.n_edges());
+    adjacency.edgeFaces.reserve(mesh.n_edges());
+    adjacency.edgeVertices.reserve(mesh.n_edges());
     for (auto e : mesh.edges())
     {
         auto h0 = mesh.halfedge_handle(e, 0);
@@ -271,9 +273,13 @@ void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
         if (mesh.is_boundary(h1))
             adjacency.boundaryEdges.push_back(BoundaryEdge{ f0, v0, v1 });
         else
-            adjacency.edges.push_back(InteriorEdge{ f0, std::uint32_t(mesh.face_handle(h1).idx()), v0, v1 });
+        {
+            adjacency.edgeFaces.push_back(EdgeFaces{ f0, std::uint32_t(mesh.face_handle(h1).idx()) });
+            adjacency.edgeVertices.push_back(EdgeVertices{ v0, v1 });
+        }
     }
-    adjacency.edges.shrink_to_fit();
+    adjacency.edgeFaces.shrink_to_fit();
+    adjacency.edgeVertices.shrink_to_fit();
 }
 
 void warnAboutInput(const std::string& name, const MeshBuildReport& report)
@@ -293,7 +299,8 @@ void warnAboutInput(const std::string& name, const MeshBuildReport& report)
 std::size_t MeshAdjacency::memoryBytes() const
 {
     return positions.capacity() * sizeof(osg::Vec3f) + faces.capacity() * sizeof(MeshTriangle) +
-           planes.capacity() * sizeof(osg::Vec4d) + edges.capacity() * sizeof(InteriorEdge) +
+           planes.capacity() * sizeof(osg::Vec4d) + edgeFaces.capacity() * sizeof(EdgeFaces) +
+           edgeVertices.capacity() * sizeof(EdgeVertices) +
            boundaryEdges.capacity() * sizeof(BoundaryEdge) +
            nonManifoldFaces.capacity() * sizeof(std::uint32_t);
 }

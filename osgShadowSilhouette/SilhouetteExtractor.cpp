@@ -5,6 +5,10 @@
 
 #include <osgShadowSilhouette/SilhouetteExtractor>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace osgShadowSilhouette {
 
 namespace {
@@ -30,17 +34,21 @@ void pushEdge(SilhouetteEdges& out, std::uint32_t a, std::uint32_t b, std::uint8
     out.multiplicity.push_back(multiplicity);
 }
 
-/** Edges between a lit and an unlit face, lit face on the left. The hot loop. */
+/** Edges between a lit and an unlit face, lit face on the left. The hot loop: it reads the
+ *  face pairs only and looks the vertices up for the few silhouette edges. */
 void extractInteriorEdges(const MeshAdjacency& mesh, std::uint8_t multiplicity,
                           SilhouetteEdges& out)
 {
     const std::uint8_t* lit = out.lit.data();
-    for (const InteriorEdge& e : mesh.edges)
+    const EdgeFaces* faces = mesh.edgeFaces.data();
+    const std::size_t count = mesh.edgeFaces.size();
+    for (std::size_t i = 0; i < count; ++i)
     {
-        const std::uint8_t a = lit[e.face0];
-        if (a == lit[e.face1]) continue;
-        if (a) pushEdge(out, e.v0, e.v1, multiplicity);
-        else pushEdge(out, e.v1, e.v0, multiplicity);
+        const std::uint8_t a = lit[faces[i].face0];
+        if (a == lit[faces[i].face1]) continue;
+        const EdgeVertices& v = mesh.edgeVertices[i];
+        if (a) pushEdge(out, v.v0, v.v1, multiplicity);
+        else pushEdge(out, v.v1, v.v0, multiplicity);
     }
 }
 
@@ -137,6 +145,48 @@ void capSizes(CastMode mode, std::size_t faces, std::size_t lit, std::size_t& li
     }
 }
 
+#if defined(__SSE2__)
+/** Two faces per step: (x*lx + z*lz) + (y*ly + w*lw) in SSE2, the order facesLight() uses. */
+std::size_t classifyPlanes(const osg::Vec4d* planes, std::size_t count, const osg::Vec4d& light,
+                           std::uint8_t* out)
+{
+    const double* p = planes->ptr();
+    const __m128d lxy = _mm_set_pd(light.y(), light.x());
+    const __m128d lzw = _mm_set_pd(light.w(), light.z());
+    const __m128d zero = _mm_setzero_pd();
+    std::size_t litCount = 0, f = 0;
+    for (; f + 2 <= count; f += 2, p += 8)
+    {
+        // s = (x*lx + z*lz, y*ly + w*lw) for each of the two faces
+        __m128d s0 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p), lxy), _mm_mul_pd(_mm_loadu_pd(p + 2), lzw));
+        __m128d s1 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p + 4), lxy), _mm_mul_pd(_mm_loadu_pd(p + 6), lzw));
+        __m128d dots = _mm_add_pd(_mm_unpacklo_pd(s0, s1), _mm_unpackhi_pd(s0, s1));
+        const int mask = _mm_movemask_pd(_mm_cmpgt_pd(dots, zero));
+        out[f] = mask & 1;
+        out[f + 1] = mask >> 1;
+        litCount += (mask & 1) + (mask >> 1);
+    }
+    for (; f < count; ++f)
+    {
+        out[f] = facesLight(planes[f], light);
+        litCount += out[f];
+    }
+    return litCount;
+}
+#else
+std::size_t classifyPlanes(const osg::Vec4d* planes, std::size_t count, const osg::Vec4d& light,
+                           std::uint8_t* out)
+{
+    std::size_t litCount = 0;
+    for (std::size_t f = 0; f < count; ++f)
+    {
+        out[f] = facesLight(planes[f], light);
+        litCount += out[f];
+    }
+    return litCount;
+}
+#endif
+
 }
 
 osg::Vec4d lightInObjectSpace(const HomogeneousLight& light, const osg::Matrixd& world)
@@ -152,19 +202,7 @@ std::size_t SilhouetteExtractor::classifyFaces(const MeshAdjacency& mesh,
 {
     const std::size_t count = mesh.planes.size();
     lit.resize(count);
-    const osg::Vec4d* planes = mesh.planes.data();
-    std::uint8_t* out = lit.data();
-    const double lx = objectLight.x(), ly = objectLight.y(), lz = objectLight.z();
-    const double lw = objectLight.w();
-    std::size_t litCount = 0;
-    for (std::size_t f = 0; f < count; ++f)
-    {
-        const osg::Vec4d& p = planes[f];
-        const bool facing = p.x() * lx + p.y() * ly + p.z() * lz + p.w() * lw > 0.0;
-        out[f] = facing;
-        litCount += facing;
-    }
-    return litCount;
+    return classifyPlanes(mesh.planes.data(), count, objectLight, lit.data());
 }
 
 void SilhouetteExtractor::extract(const MeshAdjacency& mesh, const osg::Vec4d& objectLight,

@@ -141,7 +141,7 @@ TEST_P(PrimitiveModes, BuildsTheExpectedWeldedMesh)
     MeshAdjacency m = adjacencyOf(*c.geometry());
     EXPECT_EQ(c.faces, m.faces.size());
     EXPECT_EQ(c.vertices, m.positions.size());
-    EXPECT_EQ(c.interiorEdges, m.edges.size());
+    EXPECT_EQ(c.interiorEdges, m.edgeCount());
     EXPECT_EQ(c.boundaryEdges, m.boundaryEdges.size());
     EXPECT_EQ(c.boundaryEdges == 0, m.isClosed());
     EXPECT_TRUE(m.nonManifoldFaces.empty());
@@ -189,7 +189,7 @@ TEST_P(Topology, ClosedWithTheExpectedEulerCharacteristic)
     MeshAdjacency m = adjacencyOf(*c.geometry());
     EXPECT_TRUE(m.isClosed());
     EXPECT_EQ(c.vertices, (long long)m.positions.size());
-    EXPECT_EQ(c.edges, (long long)m.edges.size());
+    EXPECT_EQ(c.edges, (long long)m.edgeCount());
     EXPECT_EQ(c.faces, (long long)m.faces.size());
     EXPECT_EQ(c.euler, c.vertices - c.edges + c.faces);
 }
@@ -204,8 +204,9 @@ bool faceRuns(const MeshTriangle& t, std::uint32_t a, std::uint32_t b)
 TEST_P(Topology, EdgesRecordTheDirectionOfTheirFaces)
 {
     MeshAdjacency m = adjacencyOf(*GetParam().geometry());
-    for (const InteriorEdge& e : m.edges)
+    for (std::size_t i = 0; i < m.edgeCount(); ++i)
     {
+        const InteriorEdge e = m.edge(i);
         EXPECT_TRUE(faceRuns(m.faces[e.face0], e.v0, e.v1));
         EXPECT_TRUE(faceRuns(m.faces[e.face1], e.v1, e.v0));
     }
@@ -342,7 +343,7 @@ TEST(NonManifold, ThirdFaceOnAnEdgeIsKeptAsAnIsolatedOpenFace)
     ASSERT_EQ(1u, m.nonManifoldFaces.size());
     EXPECT_EQ(3u, m.faces.size());
     EXPECT_FALSE(m.isClosed());
-    EXPECT_EQ(1u, m.edges.size());          // the rhombus diagonal A-B
+    EXPECT_EQ(1u, m.edgeCount());          // the rhombus diagonal A-B
     EXPECT_EQ(7u, m.boundaryEdges.size());  // rhombus 4 + fin 3
     // the fin has vertices of its own, at the positions of A, B and C3
     const std::uint32_t finIndex = m.nonManifoldFaces[0];
