@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs everything osgShadowSilhouette needs on Debian 12 (bookworm), from Debian's
+# packages only. Safe to run again: apt-get skips what is installed.
+set -euo pipefail
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+PACKAGES=(
+  build-essential cmake git ca-certificates pkg-config
+  libopenscenegraph-dev openscenegraph      # OSG 3.6.5, osgviewer, osgconv
+  libopenmesh-dev libglm-dev                 # half-edge meshes, math
+  libembree-dev                              # exact reference (tests and benchmark)
+  libgtest-dev libbenchmark-dev              # tests, benchmarks
+  libgl1-mesa-dri libgl-dev xvfb xauth x11-utils  # OpenGL (llvmpipe without a GPU), virtual display
+  glmark2-data                               # bunny.obj: a real scanned mesh for benchmarks
+  gnuplot-nox                                # benchmark plots
+)
+# Strip the comments above into a clean list.
+LIST=$(printf '%s\n' "${PACKAGES[@]}" | sed 's/#.*//' | tr -s ' \n' ' ')
+export DEBIAN_FRONTEND=noninteractive
+if ! dpkg -s $LIST >/dev/null 2>&1; then
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq $LIST >/dev/null
+fi
+echo "dependencies: installed"

@@ -1,0 +1,275 @@
+// Light-space fitting: frustum corners, depth ranges, the visible region and the fitted
+// light frusta, against hand-derived values.
+#include <osgShadowSilhouette/LightSpace>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace osgShadowSilhouette;
+
+namespace {
+
+osg::BoundingBoxd boxOf(const std::vector<osg::Vec3d>& points)
+{
+    osg::BoundingBoxd b;
+    for (const osg::Vec3d& p : points) b.expandBy(p);
+    return b;
+}
+
+std::vector<osg::Vec3d> square(double half, double z)
+{
+    return {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+}
+
+void expectNear(const osg::Vec3d& a, const osg::Vec3d& b, double tol = 1e-9)
+{
+    EXPECT_NEAR(a.x(), b.x(), tol);
+    EXPECT_NEAR(a.y(), b.y(), tol);
+    EXPECT_NEAR(a.z(), b.z(), tol);
+}
+
+} // namespace
+
+TEST(FrustumCorners, OrthographicIdentityView)
+{
+    const auto c = frustumCorners(osg::Matrixd(), osg::Matrixd::ortho(-1, 1, -2, 2, 1, 3));
+    expectNear(c[0], {-1, -2, -1});
+    expectNear(c[2], {1, 2, -1});
+    expectNear(c[4], {-1, -2, -3});
+    expectNear(c[6], {1, 2, -3});
+}
+
+TEST(FrustumCorners, PerspectiveNinetyDegrees)
+{
+    // fovy 90, aspect 1: at distance d the half extent is d.
+    const auto c = frustumCorners(osg::Matrixd(), osg::Matrixd::perspective(90, 1, 1, 10));
+    expectNear(c[0], {-1, -1, -1}, 1e-9);
+    expectNear(c[6], {10, 10, -10}, 1e-7);
+}
+
+TEST(FrustumCorners, ViewMatrixIsUndone)
+{
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 5), osg::Vec3d(), osg::Vec3d(0, 1, 0));
+    const auto c = frustumCorners(view, osg::Matrixd::ortho(-1, 1, -1, 1, 1, 3));
+    expectNear(c[0], {-1, -1, 4});
+    expectNear(c[6], {1, 1, 2});
+}
+
+TEST(WithDepthRange, PerspectiveEqualsRebuiltMatrix)
+{
+    const osg::Matrixd p = withDepthRange(osg::Matrixd::perspective(60, 1.5, 1, 100), 2, 50);
+    const osg::Matrixd q = osg::Matrixd::perspective(60, 1.5, 2, 50);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) EXPECT_NEAR(p(i, j), q(i, j), 1e-12) << i << "," << j;
+}
+
+TEST(WithDepthRange, OrthographicEqualsRebuiltMatrix)
+{
+    const osg::Matrixd p = withDepthRange(osg::Matrixd::ortho(-1, 2, -3, 4, 1, 100), -5, 7);
+    const osg::Matrixd q = osg::Matrixd::ortho(-1, 2, -3, 4, -5, 7);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) EXPECT_NEAR(p(i, j), q(i, j), 1e-12) << i << "," << j;
+}
+
+TEST(VisibleRegion, FrustumInsideBoxKeepsItsCorners)
+{
+    const auto c = frustumCorners(osg::Matrixd(), osg::Matrixd::ortho(-1, 1, -1, 1, 1, 3));
+    const osg::BoundingBoxd b = boxOf(visibleRegion(c, osg::BoundingBoxd(-10, -10, -10, 10, 10, 10)));
+    expectNear(b._min, {-1, -1, -3});
+    expectNear(b._max, {1, 1, -1});
+}
+
+TEST(VisibleRegion, BoxClipsTheFrustum)
+{
+    const auto c = frustumCorners(osg::Matrixd(), osg::Matrixd::ortho(-1, 1, -1, 1, 1, 3));
+    const osg::BoundingBoxd b = boxOf(visibleRegion(c, osg::BoundingBoxd(0, -10, -2.5, 5, 0.5, 10)));
+    expectNear(b._min, {0, -1, -2.5});
+    expectNear(b._max, {1, 0.5, -1});
+}
+
+TEST(VisibleRegion, DisjointBoxGivesNothing)
+{
+    const auto c = frustumCorners(osg::Matrixd(), osg::Matrixd::ortho(-1, 1, -1, 1, 1, 3));
+    EXPECT_TRUE(visibleRegion(c, osg::BoundingBoxd(5, 5, 5, 6, 6, 6)).empty());
+    EXPECT_TRUE(visibleRegion(c, osg::BoundingBoxd()).empty());
+}
+
+TEST(VisibleRegion, PerspectiveClippedByGroundSlab)
+{
+    // Looking straight down from z = 10 with a 90 degree frustum onto the slab z in [0, 1]:
+    // at depth 9..10 the half extent is 9..10.
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 10), osg::Vec3d(), osg::Vec3d(0, 1, 0));
+    const auto c = frustumCorners(view, osg::Matrixd::perspective(90, 1, 0.5, 100));
+    const osg::BoundingBoxd b = boxOf(visibleRegion(c, osg::BoundingBoxd(-100, -100, 0, 100, 100, 1)));
+    expectNear(b._min, {-10, -10, 0}, 1e-6);
+    expectNear(b._max, {10, 10, 1}, 1e-6);
+}
+
+TEST(FitDirectional, OverheadLightCoversCasterOverRegion)
+{
+    // Light straight above; a caster box over part of a 2x2 ground region.
+    const std::vector<osg::Vec3d> region = square(1, 0);
+    const osg::BoundingBoxd casters(-0.5, -0.5, 0, 0.5, 0.5, 2);
+    const LightFrustum f = fitDirectionalFrustum({0, 0, 1}, region, casters, 256);
+    ASSERT_TRUE(f.valid);
+    EXPECT_FALSE(f.perspective);
+    const osg::Matrixd t = f.worldToTexture();
+    // The caster's footprint lies inside the map, the caster's top nearer than the ground.
+    for (const osg::Vec3d& p : square(0.5, 0))
+    {
+        const osg::Vec3d q = p * t;
+        EXPECT_GE(q.x(), 0.0);
+        EXPECT_LE(q.x(), 1.0);
+        EXPECT_GE(q.y(), 0.0);
+        EXPECT_LE(q.y(), 1.0);
+    }
+    const double top = (osg::Vec3d(0, 0, 2) * t).z(), ground = (osg::Vec3d(0, 0, 0) * t).z();
+    EXPECT_GT(top, -1e-9);
+    EXPECT_LT(top, ground);
+    EXPECT_LT(ground, 1.0 + 1e-9);
+    // Shrunk to the casters: the map spans about the caster's 1 unit, not the region's 2.
+    const double width = ((osg::Vec3d(1, 0, 0) * t) - (osg::Vec3d(0, 0, 0) * t)).length();
+    EXPECT_GT(width, 0.9);
+}
+
+TEST(FitDirectional, CastersBesideTheRegionGiveNoPass)
+{
+    const LightFrustum f =
+        fitDirectionalFrustum({0, 0, 1}, square(1, 0), osg::BoundingBoxd(5, 5, 0, 6, 6, 1), 256);
+    EXPECT_FALSE(f.valid);
+}
+
+TEST(FitDirectional, EmptyInputsGiveNoPass)
+{
+    EXPECT_FALSE(fitDirectionalFrustum({0, 0, 1}, {}, osg::BoundingBoxd(0, 0, 0, 1, 1, 1), 256).valid);
+    EXPECT_FALSE(fitDirectionalFrustum({0, 0, 1}, square(1, 0), osg::BoundingBoxd(), 256).valid);
+    EXPECT_FALSE(fitDirectionalFrustum({0, 0, 0}, square(1, 0), osg::BoundingBoxd(0, 0, 0, 1, 1, 1), 256).valid);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(fitDirectionalFrustum({nan, 0, 1}, square(1, 0), osg::BoundingBoxd(0, 0, 0, 1, 1, 1), 256).valid);
+}
+
+TEST(FitDirectional, TexelGridStaysPutWhenTheViewMoves)
+{
+    // A fixed world point keeps its sub-texel position when the visible region slides by a
+    // fraction of a texel (the extent stays the same): shadows do not swim.
+    const unsigned int n = 512;
+    const osg::BoundingBoxd casters(-50, -50, 0, 50, 50, 2);
+    const osg::Vec3d probe(0.123, 0.456, 0);
+    double first = -1.0;
+    for (double shift : {0.0, 0.0017, 0.0031})
+    {
+        std::vector<osg::Vec3d> region = square(4, 0);
+        for (osg::Vec3d& p : region) p.x() += shift;
+        const LightFrustum f = fitDirectionalFrustum({0, 0, 1}, region, casters, n);
+        ASSERT_TRUE(f.valid);
+        const double u = (probe * f.worldToTexture()).x() * n;
+        const double frac = u - std::floor(u);
+        if (first < 0.0) first = frac;
+        EXPECT_NEAR(frac, first, 1e-6) << "shift " << shift;
+    }
+}
+
+TEST(FitPerspective, SpotLightEnclosesTheRegion)
+{
+    LightDescription spot;
+    spot.type = LightDescription::SPOT;
+    spot.position = {0, 0, 10};
+    spot.spotDirection = {0, 0, -1};
+    spot.spotCutoffDeg = 45;
+    const LightFrustum f = fitPerspectiveFrustum(spot, square(1, 0), osg::BoundingBoxd(-1, -1, 0, 1, 1, 1));
+    ASSERT_TRUE(f.valid);
+    EXPECT_TRUE(f.perspective);
+    const osg::Matrixd t = f.worldToTexture();
+    for (const osg::Vec3d& p : square(1, 0))
+    {
+        const osg::Vec4d q = osg::Vec4d(p, 1.0) * t;
+        EXPECT_GT(q.w(), 0.0);
+        for (double v : {q.x() / q.w(), q.y() / q.w(), q.z() / q.w()})
+        {
+            EXPECT_GE(v, 0.0);
+            EXPECT_LE(v, 1.0);
+        }
+    }
+    // The square frustum needs tan(half angle) = 1/10 for the corners; the fit adds 1%.
+    double fovy, aspect, zNear, zFar;
+    ASSERT_TRUE(f.projection.getPerspective(fovy, aspect, zNear, zFar));
+    EXPECT_NEAR(fovy, 2.0 * osg::RadiansToDegrees(std::atan(0.1 * 1.01)), 1e-9);
+    EXPECT_NEAR(zFar, 10.0 * 1.01, 1e-9);
+}
+
+TEST(FitPerspective, ConeCapsTheFieldOfView)
+{
+    LightDescription spot;
+    spot.type = LightDescription::SPOT;
+    spot.position = {0, 0, 1};
+    spot.spotDirection = {0, 0, -1};
+    spot.spotCutoffDeg = 10;
+    const LightFrustum f = fitPerspectiveFrustum(spot, square(100, 0), osg::BoundingBoxd(-1, -1, 0, 1, 1, 0.5));
+    ASSERT_TRUE(f.valid);
+    double fovy, aspect, zNear, zFar;
+    ASSERT_TRUE(f.projection.getPerspective(fovy, aspect, zNear, zFar));
+    EXPECT_NEAR(fovy, 20.0 * 1.02, 1e-6);
+}
+
+TEST(FitPerspective, RegionBehindTheLightGivesNoPass)
+{
+    LightDescription spot;
+    spot.type = LightDescription::SPOT;
+    spot.position = {0, 0, -5};
+    spot.spotDirection = {0, 0, -1};
+    spot.spotCutoffDeg = 30;
+    EXPECT_FALSE(fitPerspectiveFrustum(spot, square(1, 0), osg::BoundingBoxd(-1, -1, 0, 1, 1, 1)).valid);
+}
+
+TEST(LightDescription, DirectionalRotatedByItsLightSource)
+{
+    osg::ref_ptr<osg::Light> lightPtr = new osg::Light(2);
+    osg::Light& light = *lightPtr;
+    light.setPosition(osg::Vec4(1, 0, 0, 0));
+    LightDescription d;
+    ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd::rotate(osg::PI_2, osg::Vec3d(0, 0, 1)), d));
+    EXPECT_EQ(d.type, LightDescription::DIRECTIONAL);
+    EXPECT_EQ(d.lightNum, 2);
+    expectNear(d.direction, {0, 1, 0}, 1e-12);
+    EXPECT_EQ(d.homogeneous().w(), 0.0);
+}
+
+TEST(LightDescription, PositionalDividesByWAndTranslates)
+{
+    osg::ref_ptr<osg::Light> lightPtr = new osg::Light;
+    osg::Light& light = *lightPtr;
+    light.setPosition(osg::Vec4(2, 4, 6, 2));
+    LightDescription d;
+    ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd::translate(10, 0, 0), d));
+    EXPECT_EQ(d.type, LightDescription::POINT);
+    expectNear(d.position, {11, 2, 3});
+}
+
+TEST(LightDescription, SpotCutoffBelowNinetyMakesASpot)
+{
+    osg::ref_ptr<osg::Light> lightPtr = new osg::Light;
+    osg::Light& light = *lightPtr;
+    light.setPosition(osg::Vec4(0, 0, 5, 1));
+    light.setDirection(osg::Vec3(0, 0, -2));
+    light.setSpotCutoff(30);
+    LightDescription d;
+    ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd(), d));
+    EXPECT_EQ(d.type, LightDescription::SPOT);
+    expectNear(d.spotDirection, {0, 0, -1});
+    EXPECT_EQ(d.spotCutoffDeg, 30);
+}
+
+TEST(LightDescription, NonFiniteLightIsRefused)
+{
+    osg::ref_ptr<osg::Light> lightPtr = new osg::Light;
+    osg::Light& light = *lightPtr;
+    light.setPosition(osg::Vec4(std::numeric_limits<float>::quiet_NaN(), 0, 1, 0));
+    LightDescription d;
+    d.lightNum = 7;
+    EXPECT_FALSE(LightDescription::fromLight(light, osg::Matrixd(), d));
+    EXPECT_EQ(d.lightNum, 7); // untouched
+    light.setPosition(osg::Vec4(0, 0, 0, 0));
+    EXPECT_FALSE(LightDescription::fromLight(light, osg::Matrixd(), d));
+}

@@ -1,0 +1,69 @@
+// Shared by the GL tests: render a built-in scene with the technique, read its shadow mask
+// back, and score it against the exact reference.
+#ifndef OSS_TESTS_GLTESTSUPPORT_H
+#define OSS_TESTS_GLTESTSUPPORT_H
+
+#include "Offscreen.h"
+#include "Setup.h"
+#include "reference/Reference.h"
+
+#include <osgShadow/ShadowedScene>
+
+#include <gtest/gtest.h>
+
+namespace osstest {
+
+using osgShadowSilhouette::SilhouetteShadowTechnique;
+
+/** A built-in scene under a ShadowedScene with the technique, rendered offscreen. */
+struct ShadowedRender
+{
+    osshar::PreparedScene scene;
+    osg::ref_ptr<SilhouetteShadowTechnique> technique;
+    osg::ref_ptr<osg::Node> root;
+    std::unique_ptr<osshar::Renderer> renderer;
+
+    ShadowedRender(const std::string& sceneName, const std::string& mode, unsigned int mapSize, int width = 1024,
+                   int height = 768)
+    {
+        osshar::RenderOptions options;
+        options.scene = sceneName;
+        std::string error;
+        if (!osshar::prepareScene(options, scene, error) ||
+            !osshar::makeShadowedRoot(mode, mapSize, scene, root, technique, error))
+            ADD_FAILURE() << error;
+        renderer.reset(new osshar::Renderer(width, height, true));
+        if (!renderer->valid())
+        {
+            ADD_FAILURE() << "no graphics context: GL tests need a display (run them under xvfb-run)";
+            return;
+        }
+        renderer->setSceneData(root.get());
+        renderer->setView(scene.view);
+    }
+
+    bool valid() const { return renderer && renderer->valid() && technique; }
+
+    /** The technique's shadow mask of light `index` (DEBUG_SHADOW_MASK), after `frames` frames. */
+    ossref::Mask mask(unsigned int index = 0, int frames = 2)
+    {
+        renderer->timeFrames(0, frames);
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
+        technique->setDebugLight(index);
+        osg::ref_ptr<osg::Image> image = renderer->renderAndCapture(osg::Vec4(128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1));
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_NONE);
+        return ossref::maskFromImage(*image);
+    }
+
+    /** The exact reference mask of light `index` for the same view. */
+    ossref::Mask reference(unsigned int index = 0) const
+    {
+        return ossref::computeReferenceMask(*scene.content,
+                                            osshar::referenceCamera(scene.view, renderer->width(), renderer->height()),
+                                            osshar::referenceLight(scene.lights.at(index)));
+    }
+};
+
+} // namespace osstest
+
+#endif
