@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
 #include <random>
+#include <sstream>
 
 using namespace osgShadowSilhouette;
 using namespace meshtest;
@@ -376,6 +378,58 @@ TEST(TwoSidedRule, FoldOfAnOpenCasterCarriesTwoSideQuads)
     EXPECT_NEAR(1.0, windingNumber(v, osg::Vec3d(0, -0.5, 0.1)), 1e-6);
     EXPECT_NEAR(2.0, windingNumber(v, osg::Vec3d(0, -3, -0.2)), 1e-6);
     EXPECT_NEAR(0.0, windingNumber(v, osg::Vec3d(0, 3, 0.8)), 1e-6);
+}
+
+/** The scanned Stanford bunny of Debian's glmark2-data, as vertices and triangles. */
+bool readBunny(TriangleSoup& soup)
+{
+    std::ifstream in("/usr/share/glmark2/models/bunny.obj");
+    std::string line, tag, corner;
+    while (std::getline(in, line))
+    {
+        std::istringstream fields(line);
+        fields >> tag;
+        if (tag == "v")
+        {
+            osg::Vec3d p;
+            fields >> p.x() >> p.y() >> p.z();
+            soup.positions.push_back(p);
+        }
+        else if (tag == "f")
+            for (int k = 0; k < 3 && fields >> corner; ++k) soup.indices.push_back(std::stoul(corner) - 1);
+    }
+    return !soup.indices.empty();
+}
+
+TEST(RealMesh, ScannedBunnyGivesClosedLoopsAndAWatertightVolume)
+{
+    TriangleSoup soup;
+    if (!readBunny(soup)) GTEST_SKIP() << "glmark2-data is not installed";
+    MeshAdjacency mesh;
+    buildMeshAdjacency(soup, MeshBuildOptions(), "bunny", mesh);
+    ASSERT_EQ(69666u, mesh.faces.size());
+    ASSERT_TRUE(mesh.isClosed());
+    const osg::Vec4d lights[] = { { 0.3, 0.5, 1, 0 }, { -1, 0.2, 0.1, 0 }, { 1, 2, 6, 1 }, { 0.1, -3, 0.5, 1 } };
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-1.2, 1.2);
+    for (const osg::Vec4d& light : lights)
+    {
+        SilhouetteEdges s;
+        ShadowVolume v;
+        SilhouetteExtractor().extract(mesh, light, s);
+        SilhouetteExtractor().buildVolume(mesh, s, v);
+        EXPECT_GT(s.edgeCount(), 100u);
+        EXPECT_TRUE(silhouetteIsBalanced(s));
+        EXPECT_TRUE(silhouetteHasEvenDegrees(s));
+        std::set<std::pair<std::uint32_t, std::uint32_t>> seams;
+        for (std::uint32_t c : silhouetteCrossings(s)) seams.insert({ c, c + std::uint32_t(mesh.positions.size()) });
+        EXPECT_EQ(seams, nonManifoldEdges(v));
+        for (int i = 0; i < 10; ++i)
+        {
+            osg::Vec3d p(coordinate(random), coordinate(random), coordinate(random));
+            EXPECT_NEAR(double(castingFacesBetween(mesh, s.lit, light, p, false)), windingNumber(v, p), 1e-6);
+        }
+    }
 }
 
 }
