@@ -18,10 +18,18 @@ CachedMesh::~CachedMesh() {}
 MeshCache::MeshCache() {}
 MeshCache::~MeshCache() {}
 
-bool MeshCache::Signature::operator==(const Signature& other) const
+bool MeshCache::Signature::matches(const osg::Geometry& geometry) const
 {
-    return vertices == other.vertices && verticesModified == other.verticesModified &&
-           primitives == other.primitives;
+    const osg::Array* array = geometry.getVertexArray();
+    if (array != vertices || (array && array->getModifiedCount() != verticesModified)) return false;
+    if (geometry.getNumPrimitiveSets() != primitives.size()) return false;
+    for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
+    {
+        const osg::PrimitiveSet* p = geometry.getPrimitiveSet(i);
+        if (p != primitives[i].first || (p && p->getModifiedCount() != primitives[i].second))
+            return false;
+    }
+    return true;
 }
 
 MeshCache::Signature MeshCache::signatureOf(const osg::Geometry& geometry)
@@ -55,14 +63,15 @@ osg::ref_ptr<CachedMesh> MeshCache::build(const osg::Geometry& geometry) const
 
 osg::ref_ptr<const CachedMesh> MeshCache::get(const osg::Geometry& geometry)
 {
-    Signature signature = signatureOf(geometry);
     {
         Lock lock(_mutex);
         auto it = _entries.find(&geometry);
         if (it != _entries.end() && it->second.geometry.get() == &geometry &&
-            it->second.signature == signature)
+            it->second.signature.matches(geometry))
             return it->second.mesh;
     }
+    // taken before building, so that a change made meanwhile triggers another rebuild
+    Signature signature = signatureOf(geometry);
     osg::ref_ptr<const CachedMesh> mesh = build(geometry);
     Lock lock(_mutex);
     Entry& entry = _entries[&geometry];
