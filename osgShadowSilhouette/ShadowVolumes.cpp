@@ -1,0 +1,390 @@
+#include <osgShadowSilhouette/ShadowVolumes>
+
+#include <osg/BlendFunc>
+#include <osg/ColorMask>
+#include <osg/Depth>
+#include <osg/PolygonOffset>
+#include <osg/Stencil>
+#include <osg/StencilTwoSided>
+
+#include <algorithm>
+#include <cmath>
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+/** Bounds of a volume's geometry: the caster's own box (its vertices at infinity have none). */
+class CasterBoundCallback : public osg::Drawable::ComputeBoundingBoxCallback
+{
+public:
+    explicit CasterBoundCallback(const osg::BoundingBox& box) : _box(box) {}
+    osg::BoundingBox computeBound(const osg::Drawable&) const override { return _box; }
+
+private:
+    osg::BoundingBox _box;
+};
+
+/** Clears the stencil buffer (its StateSet opens the write mask). */
+class StencilClearDrawable : public osg::Drawable
+{
+public:
+    StencilClearDrawable() { setUseDisplayList(false); }
+    StencilClearDrawable(const StencilClearDrawable& d, const osg::CopyOp& op) : osg::Drawable(d, op) {}
+    META_Object(osgShadowSilhouette, StencilClearDrawable);
+    void drawImplementation(osg::RenderInfo&) const override
+    {
+        glClearStencil(0);
+        glClear(GL_STENCIL_BUFFER_BIT);
+    }
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(-1, -1, -1, 1, 1, 1); }
+};
+
+osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawElementsUInt* indices,
+                                           const osg::BoundingBox& box)
+{
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setUseDisplayList(false);
+    g->setUseVertexBufferObjects(true);
+    g->setVertexArray(vertices);
+    g->addPrimitiveSet(indices);
+    g->setComputeBoundingBoxCallback(new CasterBoundCallback(box));
+    g->setCullingActive(false);
+    return g;
+}
+
+} // namespace
+
+bool needsZFail(const osg::BoundingSphered& caster, const osg::Vec4d& light, const osg::Vec3d& eye, double nearRadius)
+{
+    if (!caster.valid()) return false;
+    const osg::Vec3d c = caster.center();
+    const double r = caster.radius() + nearRadius;
+    osg::Vec3d axis;       // away from the light
+    double tanHalf = 0.0;  // widening of the swept region per unit along the axis
+    if (light.w() == 0.0)
+        axis = -osg::Vec3d(light.x(), light.y(), light.z());
+    else
+    {
+        const osg::Vec3d l(light.x() / light.w(), light.y() / light.w(), light.z() / light.w());
+        axis = c - l;
+        const double d = axis.length();
+        if (d <= r) return true; // the light is inside the (widened) caster bound
+        tanHalf = r / std::sqrt(d * d - r * r);
+    }
+    if (axis.length2() == 0.0) return true;
+    axis.normalize();
+    const osg::Vec3d toEye = eye - c;
+    const double t = toEye * axis; // distance along the axis, from the caster's centre
+    if (t < -r) return false;      // between the light and the caster, beyond its bound
+    const double radial = (toEye - axis * t).length();
+    return radial <= r + std::max(0.0, t) * tanHalf;
+}
+
+ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask, unsigned int writeMask)
+    : _root(new osg::Group)
+{
+    _root->setName("osgShadowSilhouette shadow volumes");
+    _root->setCullingActive(false);
+    _zfailState = stencilState(true, testRef, testMask, writeMask);
+    _zpassState = stencilState(false, testRef, testMask, writeMask);
+}
+
+ShadowVolumeGroup::~ShadowVolumeGroup() = default;
+
+osg::ref_ptr<osg::StateSet> ShadowVolumeGroup::stencilState(bool zfail, unsigned int ref, unsigned int mask,
+                                                            unsigned int write) const
+{
+    osg::ref_ptr<osg::StencilTwoSided> stencil = new osg::StencilTwoSided;
+    const auto keep = osg::StencilTwoSided::KEEP;
+    const auto incr = osg::StencilTwoSided::INCR_WRAP;
+    const auto decr = osg::StencilTwoSided::DECR_WRAP;
+    for (auto face : {osg::StencilTwoSided::FRONT, osg::StencilTwoSided::BACK})
+    {
+        stencil->setFunction(face, osg::StencilTwoSided::EQUAL, int(ref), mask);
+        stencil->setWriteMask(face, write);
+        const bool back = face == osg::StencilTwoSided::BACK;
+        if (zfail) // Everitt and Kilgard: count where the volume lies behind the scene
+            stencil->setOperation(face, keep, back ? incr : decr, keep);
+        else       // z-pass: count where the volume lies in front of the scene
+            stencil->setOperation(face, keep, keep, back ? decr : incr);
+    }
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    ss->setAttributeAndModes(stencil.get(), osg::StateAttribute::ON);
+    return ss;
+}
+
+ShadowVolumeGroup::Entry ShadowVolumeGroup::createEntry() const
+{
+    Entry e;
+    e.transform = new osg::MatrixTransform;
+    e.transform->setCullingActive(false);
+    e.zSwitch = new osg::Switch;
+    e.zSwitch->setCullingActive(false);
+    e.transform->addChild(e.zSwitch.get());
+    return e;
+}
+
+void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
+{
+    const MeshAdjacency& mesh = e.caster.mesh->getAdjacency();
+    _extractor.buildVolume(mesh, HomogeneousLight{light}, e.caster.world, e.silhouette, e.volume);
+
+    osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
+    osg::ref_ptr<osg::DrawElementsUInt> all =
+        new osg::DrawElementsUInt(GL_TRIANGLES, e.volume.indices.begin(), e.volume.indices.end());
+    const auto sidesBegin = e.volume.indices.begin() + e.volume.sides.first;
+    osg::ref_ptr<osg::DrawElementsUInt> sides =
+        new osg::DrawElementsUInt(GL_TRIANGLES, sidesBegin, sidesBegin + e.volume.sides.count);
+
+    const osg::BoundingBox box = e.caster.geometry->getBoundingBox();
+    e.zfail = volumeGeometry(vertices.get(), all.get(), box);
+    e.zpass = volumeGeometry(vertices.get(), sides.get(), box);
+    osg::ref_ptr<osg::Geode> failGeode = new osg::Geode, passGeode = new osg::Geode;
+    failGeode->addDrawable(e.zfail.get());
+    passGeode->addDrawable(e.zpass.get());
+    failGeode->setStateSet(_zfailState.get());
+    passGeode->setStateSet(_zpassState.get());
+    failGeode->setCullingActive(false);
+    passGeode->setCullingActive(false);
+    e.zSwitch->removeChildren(0, e.zSwitch->getNumChildren());
+    e.zSwitch->addChild(failGeode.get());
+    e.zSwitch->addChild(passGeode.get());
+    e.transform->setMatrix(e.caster.world);
+
+    const osg::BoundingSphere local(box);
+    e.worldBound = osg::BoundingSphered(osg::Vec3d(local.center()) * e.caster.world, 0.0);
+    const double scale = std::max({osg::Vec3d(e.caster.world(0, 0), e.caster.world(0, 1), e.caster.world(0, 2)).length(),
+                                   osg::Vec3d(e.caster.world(1, 0), e.caster.world(1, 1), e.caster.world(1, 2)).length(),
+                                   osg::Vec3d(e.caster.world(2, 0), e.caster.world(2, 1), e.caster.world(2, 2)).length()});
+    e.worldBound.radius() = local.radius() * scale;
+}
+
+unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const osg::Vec4d& light)
+{
+    const bool lightChanged = light != _light;
+    _light = light;
+    if (_entries.size() != casters.size())
+    {
+        _entries.resize(casters.size());
+        _root->removeChildren(0, _root->getNumChildren());
+        for (Entry& e : _entries)
+        {
+            if (!e.transform) e = createEntry();
+            _root->addChild(e.transform.get());
+        }
+    }
+    unsigned int rebuilt = 0;
+    for (std::size_t i = 0; i < casters.size(); ++i)
+    {
+        Entry& e = _entries[i];
+        if (!lightChanged && e.zfail && e.caster == casters[i]) continue;
+        e.caster = casters[i];
+        rebuild(e, light);
+        ++rebuilt;
+    }
+    return rebuilt;
+}
+
+void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, double nearRadius)
+{
+    _zfail = _zpass = 0;
+    for (Entry& e : _entries)
+    {
+        const bool zfail = needsZFail(e.worldBound, _light, eye, nearRadius);
+        e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
+        ++(zfail ? _zfail : _zpass);
+    }
+    const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
+    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
+    _root->accept(cv);
+    cv.setComputeNearFarMode(mode);
+}
+
+std::size_t ShadowVolumeGroup::getTriangleCount() const
+{
+    std::size_t n = 0;
+    for (const Entry& e : _entries) n += e.volume.triangleCount();
+    return n;
+}
+
+osg::ref_ptr<osg::Geode> createStencilClear()
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->setName("osgShadowSilhouette stencil clear");
+    osg::ref_ptr<StencilClearDrawable> clear = new StencilClearDrawable;
+    clear->setCullingActive(false);
+    geode->addDrawable(clear.get());
+    geode->setCullingActive(false);
+    osg::ref_ptr<osg::Stencil> stencil = new osg::Stencil;
+    stencil->setWriteMask(~0u);
+    geode->getOrCreateStateSet()->setAttribute(stencil.get(), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    return geode;
+}
+
+osg::ref_ptr<osg::StateSet> createVolumeStateSet(osg::Program* program)
+{
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    if (program) ss->setAttributeAndModes(program, on | osg::StateAttribute::PROTECTED);
+    ss->setAttribute(new osg::ColorMask(false, false, false, false), on);
+    ss->setAttribute(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, false), on);
+    ss->setMode(GL_DEPTH_TEST, on);
+    ss->setMode(GL_DEPTH_CLAMP, on);
+    ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    ss->setMode(GL_STENCIL_TEST, on);
+    ss->setAttributeAndModes(new osg::PolygonOffset(0.0f, 1.0f), on);
+    ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    return ss;
+}
+
+} // namespace osgShadowSilhouette
+
+// ---------------------------------------------------------------------------------------
+// The eye passes of the stencil modes
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+constexpr unsigned int MASK_BIT = 0x80;   // HYBRID: silhouette pixel
+constexpr unsigned int COUNT_BITS = 0x7f; // HYBRID: the volumes' count
+constexpr int OUTER_BIN = 5;              // after the opaque bin (0), before transparent (10)
+constexpr int BINS_PER_LIGHT = 8;
+
+osg::ref_ptr<osg::StateSet> passState(int bin, osg::Program* program)
+{
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    ss->setRenderBinDetails(bin, "RenderBin");
+    if (program) ss->setAttributeAndModes(program, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    return ss;
+}
+
+/** Stencil test (func ref mask), no stencil writes, and blending that adds the pass. */
+void addLightState(osg::StateSet& ss, unsigned int ref, unsigned int mask, bool additive)
+{
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::Stencil> stencil = new osg::Stencil;
+    stencil->setFunction(osg::Stencil::EQUAL, int(ref), mask);
+    stencil->setOperation(osg::Stencil::KEEP, osg::Stencil::KEEP, osg::Stencil::KEEP);
+    stencil->setWriteMask(0u);
+    ss.setAttributeAndModes(stencil.get(), on);
+    ss.setAttribute(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false), on);
+    if (additive)
+        ss.setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), on);
+    else
+        ss.setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+}
+
+/** HYBRID mask pass: sets MASK_BIT where the fragment survives; writes no colour or depth. */
+void addMaskState(osg::StateSet& ss)
+{
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::Stencil> stencil = new osg::Stencil;
+    stencil->setFunction(osg::Stencil::ALWAYS, int(MASK_BIT), MASK_BIT);
+    stencil->setOperation(osg::Stencil::KEEP, osg::Stencil::KEEP, osg::Stencil::REPLACE);
+    stencil->setWriteMask(MASK_BIT);
+    ss.setAttributeAndModes(stencil.get(), on);
+    ss.setAttribute(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false), on);
+    ss.setAttribute(new osg::ColorMask(false, false, false, false), on);
+}
+
+double nearPlaneRadius(osgUtil::CullVisitor& cv)
+{
+    const osg::Matrixd& p = *cv.getProjectionMatrix();
+    const double tx = p(0, 0) != 0.0 ? 1.0 / p(0, 0) : 1.0, ty = p(1, 1) != 0.0 ? 1.0 / p(1, 1) : 1.0;
+    double fovy, aspect, zNear = 0.0, zFar;
+    if (!p.getPerspective(fovy, aspect, zNear, zFar)) zNear = 0.0;
+    const double n = std::max({zNear, static_cast<double>(cv.getCalculatedNearPlane()),
+                               cv.getCalculatedFarPlane() * cv.getNearFarRatio()});
+    return 1.5 * std::max(n, 1e-6) * std::sqrt(1.0 + tx * tx + ty * ty);
+}
+
+} // namespace
+
+StencilShadowPasses::StencilShadowPasses(osg::Program* lighting, osg::Program* volume)
+    : _lighting(lighting), _volume(volume)
+{
+    _base = new osg::StateSet;
+    _base->setAttributeAndModes(lighting, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    _outer = new osg::StateSet;
+    _outer->setRenderBinDetails(OUTER_BIN, "RenderBin");
+}
+
+StencilShadowPasses::~StencilShadowPasses() = default;
+
+void StencilShadowPasses::build(Slot& s) const
+{
+    const int bin = 1 + BINS_PER_LIGHT * static_cast<int>(s.slot);
+    const std::string slot = std::to_string(s.slot), light = std::to_string(s.lightNum);
+    s.clear = createStencilClear();
+    s.clearState = passState(bin, nullptr);
+    s.volumeState = createVolumeStateSet(_volume.get());
+    s.volumeState->setRenderBinDetails(bin + 2, "RenderBin");
+    s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
+
+    s.litState = passState(bin + 3, _lighting.get());
+    s.litState->setDefine("OSS_LIGHT_PASS", slot);
+    s.litState->setDefine("OSS_LIGHT_NUM", light);
+    // Count 0 is lit; HYBRID: only at silhouette pixels (mask bit set, count 0).
+    addLightState(*s.litState, s.hybrid ? MASK_BIT : 0u, s.hybrid ? 0xffu : 0xffu, !s.mask);
+    if (!s.hybrid) return;
+
+    s.maskState = passState(bin + 1, _lighting.get());
+    s.maskState->setDefine("OSS_HYBRID_MASK", slot);
+    s.maskState->setDefine("OSS_LIGHT_NUM", light);
+    addMaskState(*s.maskState);
+    s.litShadowMapState = passState(bin + 4, _lighting.get());
+    s.litShadowMapState->setDefine("OSS_LIGHT_PASS", slot);
+    s.litShadowMapState->setDefine("OSS_LIGHT_NUM", light);
+    s.litShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
+    addLightState(*s.litShadowMapState, 0u, MASK_BIT, !s.mask);
+}
+
+StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& light, bool hybrid, bool mask)
+{
+    if (_slots.size() <= light.slot) _slots.resize(light.slot + 1);
+    Slot& s = _slots[light.slot];
+    if (!s.volumes || s.lightNum != light.lightNum || s.hybrid != hybrid || s.mask != mask)
+    {
+        s.slot = light.slot;
+        s.lightNum = light.lightNum;
+        s.hybrid = hybrid;
+        s.mask = mask;
+        build(s);
+    }
+    return s;
+}
+
+void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSlot,
+                               const std::vector<StencilLight>& lights, const std::vector<Caster>& casters,
+                               const CullReceivers& cullReceivers)
+{
+    _zfail = _zpass = _rebuilt = 0;
+    const osg::Vec3d eye = osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans();
+    const double nearRadius = nearPlaneRadius(cv);
+    cv.pushStateSet(_outer.get());
+    for (const StencilLight& light : lights)
+    {
+        const bool mask = maskSlot >= 0;
+        if (mask && int(light.slot) != maskSlot) continue;
+        Slot& s = slotFor(light, hybrid, mask);
+        cv.pushStateSet(s.clearState.get());
+        s.clear->accept(cv);
+        cv.popStateSet();
+
+        if (s.hybrid) cullReceivers(s.maskState.get());
+        _rebuilt += s.volumes->update(casters, light.position);
+        cv.pushStateSet(s.volumeState.get());
+        s.volumes->cull(cv, eye, nearRadius);
+        cv.popStateSet();
+        _zfail += s.volumes->getZFailCount();
+        _zpass += s.volumes->getZPassCount();
+
+        cullReceivers(s.litState.get());
+        if (s.hybrid) cullReceivers(s.litShadowMapState.get());
+    }
+    cv.popStateSet();
+}
+
+} // namespace osgShadowSilhouette

@@ -1,0 +1,82 @@
+#version 400 compatibility
+// osgShadowSilhouette: the eye passes of the stencil modes, SHADOW_VOLUME and HYBRID.
+//
+// Each pass draws the receivers again (same vertex stage, oss_receiver.vert, so depths are
+// identical and the passes meet with GL_EQUAL), and the define set by the pass's StateSet
+// chooses what this stage writes:
+//   (none)                 base pass: emission, ambients and the unshadowed lights
+//   OSS_LIGHT_PASS=s       one shadowed light (shadow slot s, GL light OSS_LIGHT_NUM), added
+//                          where the stencil test lets it through (count 0: lit)
+//   + OSS_HYBRID_SHADOW_MAP  ... scaled by the shadow map's answer (non-silhouette pixels)
+//   OSS_HYBRID_MASK=s      marks the silhouette pixels of slot s in the stencil buffer
+//                          (Chan and Durand 2004): front-facing to the light and 2x2 PCF
+//                          strictly between 0 and 1; every other fragment is discarded
+// With OSS_DEBUG_MASK the passes write the MEASURE.md mask of the light instead: the base
+// pass 0, the light pass 1 where the surface faces the light.
+
+#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
+#ifndef OSS_MAX_SHADOW_LIGHTS
+#define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#ifndef OSS_LIGHT_NUM
+#define OSS_LIGHT_NUM 0
+#endif
+
+in vec4 oss_eyePosition;
+in vec4 oss_texCoord0;
+in vec4 oss_unshadowedColor;
+in vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
+
+uniform sampler2D oss_baseTexture;
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+
+float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
+
+// Whether the surface's geometric normal faces GL light n and the point is inside its cone.
+bool oss_facesLight(int n)
+{
+    vec3 p = oss_eyePosition.xyz;
+    vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
+    if (dot(ng, -p) < 0.0)
+        ng = -ng;
+    vec4 lp = gl_LightSource[n].position;
+    vec3 L = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);
+    bool inCone = lp.w == 0.0 || gl_LightSource[n].spotCutoff > 90.0 ||
+                  dot(-L, normalize(gl_LightSource[n].spotDirection)) >= gl_LightSource[n].spotCosCutoff;
+    return dot(ng, L) > 0.0 && inCone;
+}
+
+vec4 oss_textured(vec4 color)
+{
+#ifdef OSS_BASE_TEXTURE
+    color *= texture(oss_baseTexture, oss_texCoord0.st);
+#endif
+    return color;
+}
+
+void main()
+{
+#if defined(OSS_HYBRID_MASK)
+    float pcf = oss_pcf(oss_shadowMap[OSS_HYBRID_MASK], oss_eyeToShadow[OSS_HYBRID_MASK], oss_eyePosition);
+    if (!(pcf > 0.0 && pcf < 1.0) || !oss_facesLight(OSS_LIGHT_NUM))
+        discard;
+    gl_FragColor = vec4(0.0);
+#elif defined(OSS_LIGHT_PASS)
+    float visible = 1.0;
+#ifdef OSS_HYBRID_SHADOW_MAP
+    visible = step(0.5, oss_pcf(oss_shadowMap[OSS_LIGHT_PASS], oss_eyeToShadow[OSS_LIGHT_PASS], oss_eyePosition));
+#endif
+#ifdef OSS_DEBUG_MASK
+    gl_FragColor = vec4(vec3(oss_facesLight(OSS_LIGHT_NUM) ? visible : 0.0), 1.0);
+#else
+    gl_FragColor = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0));
+#endif
+#else
+#ifdef OSS_DEBUG_MASK
+    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+#else
+    gl_FragColor = oss_textured(oss_unshadowedColor);
+#endif
+#endif
+}

@@ -1,0 +1,5 @@
+#version 400 compatibility
+// osgShadowSilhouette: shadow-volume geometry updates the stencil buffer only.
+void main()
+{
+}

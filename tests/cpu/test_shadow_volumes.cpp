@@ -1,0 +1,92 @@
+// Shadow-volume orchestration: the z-pass/z-fail choice per caster and the reuse of
+// volumes between frames.
+#include <osgShadowSilhouette/ShadowVolumes>
+
+#include "Meshes.h"
+
+#include <osg/Geode>
+#include <osg/MatrixTransform>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace osgShadowSilhouette;
+
+namespace {
+
+const osg::BoundingSphered UNIT(osg::Vec3d(0, 0, 0), 1.0);
+const osg::Vec4d OVERHEAD(0, 0, 1, 0); // directional, toward +z
+
+struct ZFailCase
+{
+    const char* name;
+    osg::BoundingSphered caster;
+    osg::Vec4d light;
+    osg::Vec3d eye;
+    bool expected;
+};
+
+class ZFailChoice : public ::testing::TestWithParam<ZFailCase>
+{
+};
+
+} // namespace
+
+TEST_P(ZFailChoice, MatchesHandDerivedAnswer)
+{
+    const ZFailCase& c = GetParam();
+    EXPECT_EQ(needsZFail(c.caster, c.light, c.eye, 0.1), c.expected) << c.name;
+}
+
+// Directional light from +z over a unit sphere: its volume lies in the cylinder of radius 1
+// below it, widened by the near radius 0.1 to 1.1. Point light at (0,0,10): the cone
+// tangent to the widened sphere (radius 1.1) has tan(half angle) = 1.1 / sqrt(100 - 1.21),
+// so 10 units below the caster's centre its radius is 1.1 + 11 / sqrt(98.79) = 2.207.
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ZFailChoice,
+    ::testing::Values(ZFailCase{"eye in the shadow column", UNIT, OVERHEAD, {0, 0, -5}, true},
+                      ZFailCase{"eye beside the column", UNIT, OVERHEAD, {1.2, 0, -5}, false},
+                      ZFailCase{"eye just inside the widened column", UNIT, OVERHEAD, {1.05, 0, -50}, true},
+                      ZFailCase{"eye between light and caster", UNIT, OVERHEAD, {0, 0, 5}, false},
+                      ZFailCase{"eye inside the caster's bound", UNIT, OVERHEAD, {0, 0, 0.5}, true},
+                      ZFailCase{"cone, inside its radius", UNIT, {0, 0, 10, 1}, {2.0, 0, -10}, true},
+                      ZFailCase{"cone, outside its radius", UNIT, {0, 0, 10, 1}, {2.25, 0, -10}, false},
+                      ZFailCase{"light inside the caster", UNIT, {0, 0, 0.5, 1}, {50, 50, 50}, true},
+                      ZFailCase{"homogeneous light with w = 2", UNIT, {0, 0, 20, 2}, {2.0, 0, -10}, true},
+                      ZFailCase{"empty bound", osg::BoundingSphered(), OVERHEAD, {0, 0, -5}, false}),
+    [](const ::testing::TestParamInfo<ZFailCase>& info) {
+        std::string n = info.param.name;
+        for (char& ch : n)
+            if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        return n;
+    });
+
+TEST(ShadowVolumeGroup, RebuildsOnlyWhatChanged)
+{
+    osg::ref_ptr<osg::Group> scene = new osg::Group;
+    osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(osg::Matrixd::translate(3, 0, 0));
+    osg::ref_ptr<osg::Geode> a = new osg::Geode, b = new osg::Geode;
+    a->addDrawable(osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1)).get());
+    b->addDrawable(osshar::makeSphere(osg::Vec3(0, 0, 1), 0.5f, 16, 8).get());
+    moved->addChild(b.get());
+    scene->addChild(a.get());
+    scene->addChild(moved.get());
+
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<ShadowVolumeGroup> volumes = new ShadowVolumeGroup;
+    std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+    ASSERT_EQ(casters.size(), 2u);
+
+    EXPECT_EQ(volumes->update(casters, OVERHEAD), 2u);
+    EXPECT_EQ(volumes->update(casters, OVERHEAD), 0u) << "a static frame rebuilds nothing";
+    // A closed box from above: light cap (2 triangles), dark cap (10), 4 side edges x 2.
+    EXPECT_GE(volumes->getTriangleCount(), 20u);
+
+    moved->setMatrix(osg::Matrixd::translate(4, 0, 0));
+    casters = collectCasters(*scene, ~0u, *cache);
+    EXPECT_EQ(volumes->update(casters, OVERHEAD), 1u) << "only the moved caster";
+    EXPECT_EQ(volumes->update(casters, osg::Vec4d(0.2, 0, 1, 0)), 2u) << "a new light rebuilds all";
+    EXPECT_EQ(volumes->getCasterCount(), 2u);
+    EXPECT_EQ(volumes->getRoot()->getNumChildren(), 2u);
+}
