@@ -5,6 +5,8 @@
 
 #include <osgShadowSilhouette/SilhouetteExtractor>
 
+#include <algorithm>
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -77,14 +79,19 @@ void fillVertices(const MeshAdjacency& mesh, const osg::Vec4d& light, ShadowVolu
     osg::Vec4f* near = out.vertices.data();
     osg::Vec4f* far = near + n;
     const osg::Vec3f* p = mesh.positions.data();
+    for (std::size_t i = 0; i < n; ++i) near[i].set(p[i].x(), p[i].y(), p[i].z(), 1.0f);
+
     const osg::Vec3f l(light.x(), light.y(), light.z());
-    const bool directional = light.w() == 0.0;
+    if (light.w() == 0.0)
+    {
+        std::fill(far, far + n, osg::Vec4f(-l, 0.0f));
+        return;
+    }
     for (std::size_t i = 0; i < n; ++i)
     {
-        near[i].set(p[i].x(), p[i].y(), p[i].z(), 1.0f);
-        const osg::Vec3f d = directional ? -l : p[i] - l;
+        const osg::Vec3f d = p[i] - l;
+        far[i].set(d.x(), d.y(), d.z(), 0.0f);
         if (d.x() == 0.0f && d.y() == 0.0f && d.z() == 0.0f) far[i] = near[i];
-        else far[i].set(d.x(), d.y(), d.z(), 0.0f);
     }
 }
 
@@ -111,21 +118,31 @@ inline void writeTriangle(std::uint32_t*& w, std::uint32_t a, std::uint32_t b, s
     w += 3;
 }
 
-/** Writes the light cap at @p light and the dark cap at @p dark for every face. */
+/** Writes the light cap at @p light and the dark cap at @p dark for every face, one loop
+ *  per mode so that the per-face work has no mode test. */
 void writeCaps(const MeshAdjacency& mesh, const std::uint8_t* lit, CastMode mode,
                std::uint32_t n, std::uint32_t* light, std::uint32_t* dark)
 {
     const MeshTriangle* faces = mesh.faces.data();
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    const std::size_t count = mesh.faces.size();
+    if (mode == CastMode::CLOSED)
+    {
+        for (std::size_t f = 0; f < count; ++f)
+        {
+            const std::uint32_t a = faces[f].v[0], b = faces[f].v[1], c = faces[f].v[2];
+            if (lit[f]) writeTriangle(light, a, b, c);
+            else writeTriangle(dark, a + n, b + n, c + n);
+        }
+        return;
+    }
+    for (std::size_t f = 0; f < count; ++f)
     {
         const std::uint32_t a = faces[f].v[0], b = faces[f].v[1], c = faces[f].v[2];
         if (lit[f])
         {
             writeTriangle(light, a, b, c);
-            if (mode != CastMode::CLOSED) writeTriangle(dark, a + n, c + n, b + n);
+            writeTriangle(dark, a + n, c + n, b + n);
         }
-        else if (mode == CastMode::CLOSED)
-            writeTriangle(dark, a + n, b + n, c + n);
         else if (mode == CastMode::TWO_SIDED)
         {
             writeTriangle(light, a, c, b);
