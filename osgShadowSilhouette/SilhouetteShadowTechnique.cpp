@@ -30,6 +30,7 @@ enum WarningKey
     WARN_NO_LIGHT,
     WARN_BAD_LIGHT,
     WARN_MAP_SIZE,
+    WARN_NO_STENCIL,
 };
 
 /** Culls the shadowed scene's children from a light-space camera that has no children of its own. */
@@ -140,7 +141,7 @@ SilhouetteShadowTechnique::~SilhouetteShadowTechnique() = default;
 
 bool SilhouetteShadowTechnique::isModeAvailable(Mode mode)
 {
-    return mode == SHADOW_MAP;
+    return mode == SHADOW_MAP || mode == SILHOUETTE_MAP || mode == SHADOW_VOLUME || mode == HYBRID;
 }
 
 const char* SilhouetteShadowTechnique::modeName(Mode mode)
@@ -237,7 +238,7 @@ void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
 
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
 {
-    _debugView = (view == DEBUG_SHADOW_MASK) ? view : DEBUG_NONE;
+    _debugView = (view >= DEBUG_NONE && view <= DEBUG_SILHOUETTE_MAP) ? view : DEBUG_NONE;
 }
 
 void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
@@ -272,6 +273,21 @@ void SilhouetteShadowTechnique::init()
     _receiverProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _receiverProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_RECEIVER_FRAG));
     _receiverProgram->addShader(_shadowFragmentShader.get());
+    _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
+    _receiverProgram->addShader(_silhouetteFragmentShader.get());
+    _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
+    _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
+
+    _stencilProgram = new osg::Program;
+    _stencilProgram->setName("osgShadowSilhouette stencil passes");
+    _stencilProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
+    _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
+    _stencilProgram->addShader(_shadowFragmentShader.get());
+    _stencilProgram->addShader(_silhouetteFragmentShader.get());
+    _volumeProgram = new osg::Program;
+    _volumeProgram->setName("osgShadowSilhouette shadow volumes");
+    _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
+    _volumeProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_VOLUME_FRAG));
 
     _depthPassStateSet = createDepthPassStateSet();
     _litDummyTexture = createLitTexture();
@@ -320,6 +336,8 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
     if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
+    if (_silhouetteMapStateSet) _silhouetteMapStateSet->resizeGLObjectBuffers(maxSize);
+    if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _viewDataMap)
     {
         ViewData& vd = *entry.second;
@@ -328,6 +346,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
         {
             if (pass.depthCamera) pass.depthCamera->resizeGLObjectBuffers(maxSize);
             if (pass.depthTexture) pass.depthTexture->resizeGLObjectBuffers(maxSize);
+            if (pass.silhouettePass) pass.silhouettePass->resizeGLObjectBuffers(maxSize);
         }
     }
 }
@@ -338,6 +357,8 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
     if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
+    if (_silhouetteMapStateSet) _silhouetteMapStateSet->releaseGLObjects(state);
+    if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
     for (const auto& entry : _viewDataMap)
     {
         const ViewData& vd = *entry.second;
@@ -346,6 +367,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
         {
             if (pass.depthCamera) pass.depthCamera->releaseGLObjects(state);
             if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
+            if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
         }
     }
 }
@@ -376,9 +398,12 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     vd->maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
     osg::ref_ptr<osg::Uniform> samplers =
         new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, _maxShadowLights);
+    osg::ref_ptr<osg::Uniform> silhouetteSamplers =
+        new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, _maxShadowLights);
     for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
     {
         samplers->setElement(slot, int(_baseTextureUnit + slot));
+        silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
         ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), osg::StateAttribute::ON);
     }
@@ -388,7 +413,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->shadowSlot->setElement(i, -1);
     }
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
-                            vd->maskLight.get(), samplers.get()})
+                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
@@ -435,14 +460,17 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                             " is not available in this version; rendering SHADOW_MAP");
 
     ViewData& vd = *getViewData(cv);
-    cullReceivers(cv, vd);
+    const Mode mode = effectiveModeFor(cv);
+    const bool stencilMode = mode == SHADOW_VOLUME || mode == HYBRID;
+    if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
+    cullReceivers(cv, vd, stencilMode ? vd.stencil->getBaseStateSet() : nullptr);
 
     const std::vector<FoundLight> lights = collectLights(cv);
     std::vector<int> slots(lights.size(), -1);
     Statistics stats;
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
-    stats.effectiveMode = getEffectiveMode();
+    stats.effectiveMode = mode;
 
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
     osg::BoundingBoxd receivers, casters;
@@ -452,6 +480,14 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
     }
     const std::vector<osg::Vec3d> region = visibleReceiverRegion(cv, receivers);
+
+    const bool silhouette = stats.effectiveMode == SILHOUETTE_MAP;
+    std::vector<Caster> casterList;
+    if ((silhouette || stencilMode) && !lights.empty())
+        casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
+                                 *_meshCache);
+    stats.silhouetteCasters = static_cast<unsigned int>(casterList.size());
+    std::vector<osg::Texture2D*> silhouetteMaps;
 
     unsigned int slot = 0;
     for (std::size_t i = 0; i < lights.size(); ++i)
@@ -468,40 +504,118 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
             pass = createLightPass(slot);
         pass.frustum = fitLightFrustum(lights[i].description, region, casters);
         osg::Texture2D* texture = _litDummyTexture.get();
-        if (pass.frustum.valid)
+        osg::Texture2D* silhouetteMap = _defaultSilhouetteTexture.get();
+        if (pass.frustum.valid && mode != SHADOW_VOLUME)
         {
             cullDepthPass(cv, pass);
             texture = pass.depthTexture.get();
             ++stats.shadowPasses;
+            if (silhouette)
+            {
+                cullSilhouettePass(cv, pass, lights[i].description, casterList);
+                silhouetteMap = pass.silhouettePass->getTexture();
+                stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+                stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
+            }
         }
         else
             ++stats.lightsSkipped;
         vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, texture, osg::StateAttribute::ON);
+        silhouetteMaps.push_back(silhouetteMap);
         slots[i] = static_cast<int>(slot++);
     }
     for (; slot < _maxShadowLights; ++slot)
         vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(),
                                                          osg::StateAttribute::ON);
+    bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
     stats.lightsShadowed = static_cast<unsigned int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
 
+    if (stencilMode) cullStencilPasses(cv, vd, mode == HYBRID, lights, slots, casterList, stats);
     updateViewUniforms(cv, vd, lights, slots);
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
     _statistics = stats;
 }
 
-void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd)
+void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
 {
     const unsigned int mask = cv.getTraversalMask();
     cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getReceivesShadowTraversalMask());
-    if (_debugView == DEBUG_SHADOW_MASK)
-        vd.receiverStateSet->setDefine(shader::DEFINE_DEBUG_MASK);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_DEBUG_MASK);
+    updateReceiverDefines(vd);
     cv.pushStateSet(vd.receiverStateSet.get());
+    if (pass) cv.pushStateSet(pass);
     _shadowedScene->osg::Group::traverse(cv);
+    if (pass) cv.popStateSet();
     cv.popStateSet();
     cv.setTraversalMask(mask);
+}
+
+SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgUtil::CullVisitor& cv) const
+{
+    const Mode mode = getEffectiveMode();
+    if (mode != SHADOW_VOLUME && mode != HYBRID) return mode;
+    const osg::State* state = cv.getState();
+    const osg::GraphicsContext* gc = state ? state->getGraphicsContext() : nullptr;
+    const osg::GraphicsContext::Traits* traits = gc ? gc->getTraits() : nullptr;
+    if (!traits || traits->stencil > 0) return mode;
+    warnOnce(WARN_NO_STENCIL, std::string("Mode ") + modeName(mode) +
+                                  " needs a stencil buffer and the graphics context has none (call "
+                                  "osg::DisplaySettings::instance()->setMinimumNumStencilBits(8) before creating "
+                                  "it, or run osgviewer with --stencil); rendering SHADOW_MAP");
+    return SHADOW_MAP;
+}
+
+void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, ViewData& vd, bool hybrid,
+                                                  const std::vector<FoundLight>& lights, const std::vector<int>& slots,
+                                                  const std::vector<Caster>& casters, Statistics& stats)
+{
+    std::vector<StencilLight> stencilLights;
+    int maskSlot = -1;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+    {
+        if (slots[i] < 0 || !vd.passes[slots[i]].frustum.valid) continue;
+        stencilLights.push_back({static_cast<unsigned int>(slots[i]), lights[i].description.lightNum,
+                                 lights[i].description.homogeneous()});
+        if (_debugView == DEBUG_SHADOW_MASK && i == _debugLight) maskSlot = slots[i];
+    }
+    if (_debugView == DEBUG_SHADOW_MASK && maskSlot < 0) stencilLights.clear(); // the mask light casts nothing
+    vd.stencil->cull(cv, hybrid, _debugView == DEBUG_SHADOW_MASK ? maskSlot : -1, stencilLights, casters,
+                     [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
+    stats.zfailCasters = vd.stencil->getZFailCasters();
+    stats.zpassCasters = vd.stencil->getZPassCasters();
+    stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
+}
+
+void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
+{
+    const bool silhouette = getEffectiveMode() == SILHOUETTE_MAP;
+    const std::pair<const char*, bool> defines[] = {
+        {shader::DEFINE_DEBUG_MASK, _debugView == DEBUG_SHADOW_MASK},
+        {shader::DEFINE_SILHOUETTE_MAP, silhouette},
+        {shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, silhouette && _debugView == DEBUG_SILHOUETTE_PIXELS},
+        {shader::DEFINE_DEBUG_SILHOUETTE_MAP, silhouette && _debugView == DEBUG_SILHOUETTE_MAP},
+    };
+    for (const auto& define : defines)
+    {
+        if (define.second)
+            vd.receiverStateSet->setDefine(define.first);
+        else
+            vd.receiverStateSet->removeDefine(define.first);
+    }
+}
+
+void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
+{
+    osg::StateSet& ss = *vd.receiverStateSet;
+    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+    {
+        if (maps.empty())
+            ss.removeTextureAttribute(silhouetteUnit(slot), osg::StateAttribute::TEXTURE);
+        else
+            ss.setTextureAttributeAndModes(silhouetteUnit(slot),
+                                           slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
+                                           osg::StateAttribute::ON);
+    }
 }
 
 std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::collectLights(
@@ -575,6 +689,21 @@ void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPas
     const unsigned int mask = cv.getTraversalMask();
     cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
     pass.depthCamera->accept(cv);
+    cv.setTraversalMask(mask);
+}
+
+void SilhouetteShadowTechnique::cullSilhouettePass(osgUtil::CullVisitor& cv, LightPass& pass,
+                                                   const LightDescription& light, const std::vector<Caster>& casters)
+{
+    if (!pass.silhouettePass || pass.silhouettePass->getMapSize() != _shadowMapSize)
+    {
+        std::string name = pass.depthCamera->getName();
+        name.replace(name.find("depth pass"), std::strlen("depth pass"), "silhouette map");
+        pass.silhouettePass = new SilhouetteMapPass(_shadowMapSize, *_silhouetteMapStateSet, name);
+    }
+    const unsigned int mask = cv.getTraversalMask();
+    cv.setTraversalMask(~0u); // the pass draws only its edges, whatever the view's mask
+    pass.silhouettePass->cull(cv, pass.frustum, pass.depthTexture.get(), casters, light.homogeneous());
     cv.setTraversalMask(mask);
 }
 

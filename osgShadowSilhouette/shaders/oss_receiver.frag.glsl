@@ -8,6 +8,7 @@
 // normal faces away from it (the conventions of the exact reference).
 
 #pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -34,7 +35,16 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // One shadow slot's light, scaled by its shadow term. The number of slots in use is a
 // compile-time constant (a define set per view), so unused slots cost nothing: shaders
 // execute both sides of a branch on SIMD rasterizers such as llvmpipe.
-#define OSS_ADD_SLOT(s) color += oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition) * oss_shadowedColor[s]
+// In the silhouette-map mode the term comes from oss_silhouetteTerm() (oss_silhouette.frag.glsl).
+#ifdef OSS_SILHOUETTE_MAP
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+vec4 oss_silhouetteDebug(vec4 eyePosition);
+#define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
+#else
+#define OSS_SLOT_TERM(s) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
+#endif
+#define OSS_ADD_SLOT(s) color += OSS_SLOT_TERM(s) * oss_shadowedColor[s]
 
 #ifdef OSS_DEBUG_MASK
 void main()
@@ -83,6 +93,10 @@ void main()
     vec4 result = vec4(color, oss_unshadowedColor.a);
 #ifdef OSS_BASE_TEXTURE
     result *= texture(oss_baseTexture, oss_texCoord0.st);
+#endif
+#if defined(OSS_SILHOUETTE_MAP) && (defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP))
+    vec4 overlay = oss_silhouetteDebug(oss_eyePosition);
+    result.rgb = mix(result.rgb, overlay.rgb, overlay.a);
 #endif
     gl_FragColor = result;
 }

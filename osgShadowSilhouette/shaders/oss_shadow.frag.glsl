@@ -8,7 +8,7 @@
 // Applications link this shader into their own programs and call oss_shadowTerm().
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
-#pragma import_defines(OSS_MAX_SHADOW_LIGHTS)
+#pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_SILHOUETTE_MAP)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -19,6 +19,11 @@ uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
 uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 unshadowed
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];// eye space -> light texture space [0,1]^3
 uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+#ifdef OSS_SILHOUETTE_MAP
+// Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+#endif
 
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
@@ -33,7 +38,11 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 {
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
         if (s == slot)
+#ifdef OSS_SILHOUETTE_MAP
+            return oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+#else
             return oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+#endif
     return 1.0;
 }
 

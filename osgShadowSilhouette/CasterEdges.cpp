@@ -1,0 +1,115 @@
+#include <osgShadowSilhouette/CasterEdges>
+
+#include <osg/Camera>
+#include <osg/Transform>
+
+namespace osgShadowSilhouette {
+
+// ---------------------------------------------------------------------------------------
+// CasterCollector
+
+CasterCollector::CasterCollector(MeshCache& cache, unsigned int traversalMask)
+    : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _cache(cache)
+{
+    setTraversalMask(traversalMask);
+    _matrices.emplace_back();
+}
+
+void CasterCollector::apply(osg::Transform& transform)
+{
+    osg::Matrixd m = _matrices.back();
+    transform.computeLocalToWorldMatrix(m, this);
+    _matrices.push_back(m);
+    traverse(transform);
+    _matrices.pop_back();
+}
+
+void CasterCollector::apply(osg::Camera&)
+{
+    // A nested camera draws its own subgraph with its own matrices: not a caster of ours.
+}
+
+void CasterCollector::apply(osg::Geometry& geometry)
+{
+    osg::ref_ptr<const CachedMesh> mesh = _cache.get(geometry);
+    if (!mesh || mesh->getAdjacency().empty()) return;
+    Caster caster;
+    caster.geometry = &geometry;
+    caster.closed = mesh->getAdjacency().isClosed();
+    caster.mesh = mesh;
+    caster.world = _matrices.back();
+    _casters.push_back(caster);
+}
+
+std::vector<Caster> collectCasters(osg::Group& group, unsigned int castsMask, MeshCache& cache)
+{
+    CasterCollector collector(cache, castsMask);
+    for (unsigned int i = 0; i < group.getNumChildren(); ++i) group.getChild(i)->accept(collector);
+    return std::move(collector.getCasters());
+}
+
+// ---------------------------------------------------------------------------------------
+// CasterEdges
+
+CasterEdges::CasterEdges()
+{
+    _vertices = new osg::Vec3Array;
+    _drawArrays = new osg::DrawArrays(GL_LINES, 0, 0);
+    _lines = new osg::Geometry;
+    _lines->setName("osgShadowSilhouette silhouette edges");
+    _lines->setDataVariance(osg::Object::DYNAMIC);
+    _lines->setUseDisplayList(false);
+    _lines->setUseVertexBufferObjects(true);
+    _lines->setVertexArray(_vertices.get());
+    _lines->addPrimitiveSet(_drawArrays.get());
+    _lines->setCullingActive(false); // its bound changes every frame; the pass draws all of it
+}
+
+CasterEdges::~CasterEdges() = default;
+
+void CasterEdges::setOpenCasterRule(OpenCasterRule rule)
+{
+    if (rule == _extractor.getOpenCasterRule()) return;
+    _extractor.setOpenCasterRule(rule);
+    _extracted = false;
+}
+
+bool CasterEdges::update(const std::vector<Caster>& casters, const osg::Vec4d& light)
+{
+    if (_extracted && light == _light && casters == _casters)
+    {
+        ++_skipped;
+        return false;
+    }
+    _casters = casters;
+    _light = light;
+    _extracted = true;
+    ++_extractions;
+    _silhouettes.resize(casters.size());
+    _world.clear();
+    const HomogeneousLight worldLight{light};
+    for (std::size_t i = 0; i < casters.size(); ++i)
+    {
+        SilhouetteEdges& edges = _silhouettes[i];
+        _extractor.extract(casters[i].mesh->getAdjacency(), worldLight, casters[i].world, edges);
+        for (const osg::Vec3f& p : edges.positions) _world.push_back(osg::Vec3d(p) * casters[i].world);
+    }
+    _written = false;
+    return true;
+}
+
+bool CasterEdges::writeLines(const osg::Matrixd& worldToView)
+{
+    if (_written && worldToView == _view) return false;
+    _view = worldToView;
+    _written = true;
+    _vertices->resize(_world.size());
+    for (std::size_t i = 0; i < _world.size(); ++i) (*_vertices)[i] = osg::Vec3f(_world[i] * worldToView);
+    _drawArrays->setCount(static_cast<GLsizei>(_world.size()));
+    _vertices->dirty();
+    _drawArrays->dirty();
+    _lines->dirtyBound();
+    return true;
+}
+
+} // namespace osgShadowSilhouette

@@ -1,0 +1,206 @@
+#version 400 compatibility
+// osgShadowSilhouette: the shadow term of the silhouette-map mode (eye pass).
+//
+// Sen, Cammarano, Hanrahan, "Shadow Silhouette Maps", SIGGRAPH 2003, section 4.3.
+// The sample is compared with the four depth samples around it (one textureGather). When
+// they agree (not a silhouette pixel) that is the result and nothing else is read. When they
+// disagree (a silhouette pixel), the five silhouette points of the texel and its four
+// neighbours split the texel into four quadrants of two wedges each, and the sample takes
+// the depth-test result of the corner whose wedge holds it.
+// Frames: see osgShadowSilhouette/SilhouettePoints; the C++ twin is silhouetteMapLit().
+// Compiled empty unless OSS_SILHOUETTE_MAP is defined.
+
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
+#ifdef OSS_SILHOUETTE_MAP
+#ifndef OSS_MAX_SHADOW_LIGHTS
+#define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#define OSS_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a corner
+
+// Where a sample falls in the depth and silhouette maps.
+struct oss_SilhouetteSample
+{
+    ivec2 texel;   // silhouette texel = the depth samples texel .. texel + 1
+    vec2 local;    // position in that texel, [0, 1]^2
+    vec4 lit;      // depth tests of its corners as textureGather returns them: NW, NE, SE, SW
+    vec3 coord;    // light texture coordinates and depth
+    vec2 depthSlope; // d depth / d texture coordinate of the receiver's plane
+};
+
+// The receiver's depth slope in light texture space (receiver plane depth bias, Isidoro
+// 2006), from screen-space derivatives: taken in uniform control flow, before any branch.
+vec2 oss_depthSlope(vec3 coord)
+{
+    vec3 dx = dFdx(coord), dy = dFdy(coord);
+    float det = dx.x * dy.y - dx.y * dy.x;
+    if (det == 0.0)
+        return vec2(0.0);
+    return vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+}
+
+// False for points behind a perspective light (outside its map: lit).
+bool oss_silhouetteSample(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePosition, out oss_SilhouetteSample s)
+{
+    vec4 c = eyeToShadow * eyePosition;
+    vec3 t = c.xyz / c.w;
+    s.depthSlope = oss_depthSlope(t);
+    s.coord = t;
+    s.texel = ivec2(0);
+    s.local = vec2(0.5);
+    s.lit = vec4(1.0);
+    if (c.w <= 0.0)
+        return false;
+    vec2 size = vec2(textureSize(depthMap, 0));
+    vec2 u = t.xy * size - 0.5;
+    vec2 cell = floor(u);
+    s.texel = ivec2(cell);
+    s.local = u - cell;
+    // Gather at the middle of the four samples, so that the footprint is exactly these four.
+    s.lit = textureGather(depthMap, (cell + 1.0) / size, t.z);
+    return true;
+}
+
+// A neighbour's stored point in the frame of the centre texel; outside the map: its centre.
+vec2 oss_silhouettePoint(sampler2D silhouetteMap, ivec2 texel, ivec2 offset)
+{
+    ivec2 q = texel + offset;
+    bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(silhouetteMap, 0)));
+    return (inside ? texelFetch(silhouetteMap, q, 0).xy : vec2(0.5)) + vec2(offset);
+}
+
+float oss_cross2(vec2 a, vec2 b)
+{
+    return a.x * b.y - a.y * b.x;
+}
+
+// p in the closed triangle (a, b, c) of either orientation; never in one of zero area.
+bool oss_insideTriangle(vec2 p, vec2 a, vec2 b, vec2 c)
+{
+    if (oss_cross2(b - a, c - a) == 0.0)
+        return false;
+    vec3 d = vec3(oss_cross2(b - a, p - a), oss_cross2(c - b, p - b), oss_cross2(a - c, p - c));
+    return !(any(lessThan(d, vec3(0.0))) && any(greaterThan(d, vec3(0.0))));
+}
+
+// The corner (0 SW, 1 SE, 2 NE, 3 NW) whose wedge holds p; the nearest corner when none does.
+int oss_wedgeCorner(vec2 c, vec2 e, vec2 n, vec2 w, vec2 s, vec2 p)
+{
+    const vec2 SW = vec2(0.0, 0.0), SE = vec2(1.0, 0.0), NE = vec2(1.0, 1.0), NW = vec2(0.0, 1.0);
+    if (oss_insideTriangle(p, c, e, NE) || oss_insideTriangle(p, c, NE, n))
+        return 2;
+    if (oss_insideTriangle(p, c, n, NW) || oss_insideTriangle(p, c, NW, w))
+        return 3;
+    if (oss_insideTriangle(p, c, w, SW) || oss_insideTriangle(p, c, SW, s))
+        return 0;
+    if (oss_insideTriangle(p, c, s, SE) || oss_insideTriangle(p, c, SE, e))
+        return 1;
+    return p.x >= 0.5 ? (p.y >= 0.5 ? 2 : 1) : (p.y >= 0.5 ? 3 : 0);
+}
+
+// The depth tests of the four corners, each against the receiver's plane extended to that
+// corner rather than against the sample's own depth: near a caster's own silhouette (where
+// it receives light at grazing angles) the corners lie up to a texel away on a steep slope.
+// Order as textureGather: NW, NE, SE, SW.
+vec4 oss_planeBiasedTests(sampler2DShadow depthMap, oss_SilhouetteSample s)
+{
+    vec2 size = vec2(textureSize(depthMap, 0));
+    const vec2 corners[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0, 0.0));
+    vec4 lit;
+    for (int k = 0; k < 4; ++k)
+    {
+        vec2 offset = (corners[k] - s.local) / size;
+        float ref = s.coord.z + clamp(dot(s.depthSlope, offset), -OSS_MAX_PLANE_BIAS, OSS_MAX_PLANE_BIAS);
+        lit[k] = texture(depthMap, vec3((vec2(s.texel) + corners[k] + 0.5) / size, ref));
+    }
+    return lit;
+}
+
+// The shadow test of a silhouette pixel from the five silhouette points.
+float oss_silhouetteReconstruct(sampler2D silhouetteMap, oss_SilhouetteSample s)
+{
+    vec2 c = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 0));
+    vec2 e = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(1, 0));
+    vec2 n = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 1));
+    vec2 w = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(-1, 0));
+    vec2 so = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, -1));
+    vec4 byCorner = s.lit.wzyx; // SW, SE, NE, NW
+    return byCorner[oss_wedgeCorner(c, e, n, w, so, s.local)];
+}
+
+bool oss_isSilhouettePixel(oss_SilhouetteSample s)
+{
+    float pcf = dot(s.lit, vec4(0.25));
+    return pcf > 0.0 && pcf < 1.0;
+}
+
+// 1 lit, 0 shadowed.
+float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    oss_SilhouetteSample s;
+    if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
+        return 1.0;
+    float lit = s.lit.x;
+    if (oss_isSilhouettePixel(s)) // the branch that lets GPUs skip the reconstruction
+    {
+        s.lit = oss_planeBiasedTests(depthMap, s);
+        lit = oss_isSilhouettePixel(s) ? oss_silhouetteReconstruct(silhouetteMap, s) : s.lit.x;
+    }
+    return lit;
+}
+
+// Debug view: the silhouette map projected onto the scene. Silhouette texels that hold an
+// edge point are tinted yellow, their point drawn as a red dot; the dual grid is dark.
+vec4 oss_silhouetteMapOverlay(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    oss_SilhouetteSample s;
+    if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
+        return vec4(0.0);
+    vec2 c = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 0));
+    vec2 toEdge = min(s.local, 1.0 - s.local);
+    vec2 perPixel = fwidth(s.local);
+    if (any(lessThan(toEdge, perPixel)))
+        return vec4(0.1, 0.1, 0.1, 0.6);
+    if (all(equal(c, vec2(0.5))))
+        return vec4(0.0);
+    if (distance(s.local, c) < max(0.12, 1.5 * max(perPixel.x, perPixel.y)))
+        return vec4(1.0, 0.0, 0.0, 1.0);
+    return vec4(1.0, 0.9, 0.2, 0.35);
+}
+
+// Debug view: 1 at silhouette pixels.
+float oss_silhouettePixelOverlay(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    oss_SilhouetteSample s;
+    return oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s) && oss_isSilhouettePixel(s) ? 1.0 : 0.0;
+}
+
+#if defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP)
+uniform int oss_maskLight;
+uniform int oss_lightIndex[8];
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+int oss_shadowSlotOf(int light);
+
+// The debug overlay (rgb, opacity) of the light oss_maskLight (see the DebugView values).
+vec4 oss_silhouetteDebug(vec4 eyePosition)
+{
+    int slot = oss_shadowSlotOf(oss_lightIndex[clamp(oss_maskLight, 0, 7)]);
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+    {
+        if (s != slot)
+            continue;
+#ifdef OSS_DEBUG_SILHOUETTE_MAP
+        return oss_silhouetteMapOverlay(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+#else
+        return vec4(0.0, 1.0, 0.0, 0.75 * oss_silhouettePixelOverlay(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition));
+#endif
+    }
+    return vec4(0.0);
+}
+#endif
+
+#else
+// (A translation unit may not be empty.)
+const int oss_silhouetteMapUnused = 0;
+#endif

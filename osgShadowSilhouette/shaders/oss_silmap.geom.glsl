@@ -1,0 +1,65 @@
+#version 400 compatibility
+// osgShadowSilhouette: silhouette-map pass, geometry stage.
+//
+// Conservative rasterization of one silhouette edge as a thin quad (Sen, Cammarano,
+// Hanrahan 2003, section 4.2): the quad reaches OSS_HALF_WIDTH texels to each side of the
+// edge and as far past each endpoint. OSS_HALF_WIDTH > sqrt(2)/2, so the centre of every
+// texel the edge touches lies inside the quad and gets a fragment.
+//
+// Frames (see osgShadowSilhouette/SilhouettePoints): silhouette-map window coordinates are
+// depth-texel coordinates minus one half, so that silhouette texel (i, j) spans
+// [i, i+1] x [j, j+1] and its local coordinates are the window coordinates minus (i, j).
+
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+#define OSS_HALF_WIDTH 0.75
+
+uniform sampler2DShadow oss_silmapDepth; // the light's depth map (its size is the map size)
+
+flat out vec4 oss_edge;      // endpoints a.xy, b.xy in silhouette-map window coordinates
+flat out vec2 oss_edgeDepth; // window depths of a and b, in [0, 1]
+
+// The edge's part in front of the light's eye plane (w > 0).
+bool oss_clipToFront(inout vec4 a, inout vec4 b)
+{
+    const float minW = 1e-6;
+    if (a.w <= minW && b.w <= minW)
+        return false;
+    if (a.w <= minW)
+        a = mix(a, b, (minW - a.w) / (b.w - a.w));
+    else if (b.w <= minW)
+        b = mix(b, a, (minW - b.w) / (a.w - b.w));
+    return true;
+}
+
+void oss_emit(vec2 window, vec2 size, vec4 edge, vec2 depth)
+{
+    oss_edge = edge;
+    oss_edgeDepth = depth;
+    gl_Position = vec4(window / size * 2.0 - 1.0, 0.0, 1.0);
+    EmitVertex();
+}
+
+void main()
+{
+    vec4 a = gl_in[0].gl_Position, b = gl_in[1].gl_Position;
+    if (!oss_clipToFront(a, b))
+        return;
+    vec2 size = vec2(textureSize(oss_silmapDepth, 0));
+    vec3 na = a.xyz / a.w, nb = b.xyz / b.w;
+    vec2 wa = (na.xy * 0.5 + 0.5) * size - 0.5;
+    vec2 wb = (nb.xy * 0.5 + 0.5) * size - 0.5;
+    vec4 edge = vec4(wa, wb);
+    vec2 depth = vec2(na.z, nb.z) * 0.5 + 0.5;
+
+    vec2 d = wb - wa;
+    float len = length(d);
+    vec2 along = (len > 1e-6 ? d / len : vec2(1.0, 0.0)) * OSS_HALF_WIDTH;
+    vec2 across = vec2(-along.y, along.x);
+    oss_emit(wa - along - across, size, edge, depth);
+    oss_emit(wa - along + across, size, edge, depth);
+    oss_emit(wb + along - across, size, edge, depth);
+    oss_emit(wb + along + across, size, edge, depth);
+    EndPrimitive();
+}
