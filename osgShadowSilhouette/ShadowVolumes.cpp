@@ -186,19 +186,88 @@ unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const
     return rebuilt;
 }
 
-void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, double nearRadius)
+void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, double nearRadius,
+                             const osg::BoundingBoxd& receivers)
 {
     _zfail = _zpass = 0;
+    _scissorCoverage = 0.0;
+    const osg::Viewport* viewport = cv.getViewport();
+    const osg::Matrixd worldToClip = *cv.getModelViewMatrix() * *cv.getProjectionMatrix();
     for (Entry& e : _entries)
     {
         const bool zfail = needsZFail(e.worldBound, _light, eye, nearRadius);
         e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
         ++(zfail ? _zfail : _zpass);
+        applyScissor(e, receivers, worldToClip, viewport);
     }
     const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
     cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
     _root->accept(cv);
     cv.setComputeNearFarMode(mode);
+}
+
+void ShadowVolumeGroup::applyScissor(Entry& e, const osg::BoundingBoxd& receivers, const osg::Matrixd& worldToClip,
+                                     const osg::Viewport* viewport)
+{
+    osg::Vec4i rect;
+    const osg::BoundingBox local = e.caster.geometry->getBoundingBox();
+    osg::BoundingBoxd world;
+    for (unsigned int i = 0; i < 8; ++i) world.expandBy(osg::Vec3d(local.corner(i)) * e.caster.world);
+    if (!viewport || !receivers.valid() || !volumeScissor(world, _light, receivers, worldToClip, *viewport, rect))
+    {
+        e.transform->setStateSet(nullptr);
+        if (viewport) _scissorCoverage += 1.0;
+        return;
+    }
+    if (!e.scissor) e.scissor = new osg::Scissor;
+    e.scissor->setScissor(rect.x(), rect.y(), rect.z(), rect.w());
+    e.transform->getOrCreateStateSet()->setAttributeAndModes(e.scissor.get(), osg::StateAttribute::ON);
+    _scissorCoverage += double(rect.z()) * rect.w() / (viewport->width() * viewport->height());
+}
+
+bool volumeScissor(const osg::BoundingBoxd& caster, const osg::Vec4d& light, const osg::BoundingBoxd& receivers,
+                   const osg::Matrixd& worldToClip, const osg::Viewport& viewport, osg::Vec4i& rect)
+{
+    if (!caster.valid() || !receivers.valid()) return false;
+    // How far to sweep: past the far side of the receivers' box, whatever the direction.
+    const double sweep = (receivers._max - receivers._min).length() + (caster._max - caster._min).length() +
+                         (caster.center() - receivers.center()).length();
+    // The world box of the caster's box swept away from the light, cut to the receivers' box
+    // (per axis, so it still holds the part of the volume inside the receivers' box).
+    osg::BoundingBoxd swept;
+    for (unsigned int i = 0; i < 8; ++i)
+    {
+        const osg::Vec3d p = caster.corner(i);
+        osg::Vec3d away = light.w() == 0.0 ? -osg::Vec3d(light.x(), light.y(), light.z())
+                                           : p - osg::Vec3d(light.x(), light.y(), light.z()) / light.w();
+        if (away.length2() == 0.0) return false;
+        away.normalize();
+        swept.expandBy(p);
+        swept.expandBy(p + away * sweep);
+    }
+    const osg::BoundingBoxd part = swept.intersect(receivers);
+    if (!part.valid())
+    {
+        rect.set(viewport.x(), viewport.y(), 0, 0); // shadows no receiver: draw nothing
+        return true;
+    }
+    osg::BoundingBoxd screen; // normalized device x, y
+    for (unsigned int i = 0; i < 8; ++i)
+    {
+        const osg::Vec4d c = osg::Vec4d(part.corner(i), 1.0) * worldToClip;
+        if (c.w() <= 1e-9) return false;
+        screen.expandBy(osg::Vec3d(c.x() / c.w(), c.y() / c.w(), 0.0));
+    }
+    const double x0 = viewport.x() + (screen.xMin() * 0.5 + 0.5) * viewport.width();
+    const double x1 = viewport.x() + (screen.xMax() * 0.5 + 0.5) * viewport.width();
+    const double y0 = viewport.y() + (screen.yMin() * 0.5 + 0.5) * viewport.height();
+    const double y1 = viewport.y() + (screen.yMax() * 0.5 + 0.5) * viewport.height();
+    const int ix0 = std::max(int(viewport.x()), int(std::floor(x0)) - 1);
+    const int iy0 = std::max(int(viewport.y()), int(std::floor(y0)) - 1);
+    const int ix1 = std::min(int(viewport.x() + viewport.width()), int(std::ceil(x1)) + 1);
+    const int iy1 = std::min(int(viewport.y() + viewport.height()), int(std::ceil(y1)) + 1);
+    rect.set(ix0, iy0, std::max(0, ix1 - ix0), std::max(0, iy1 - iy0));
+    return true;
 }
 
 std::size_t ShadowVolumeGroup::getTriangleCount() const
@@ -358,7 +427,7 @@ StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& ligh
 
 void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSlot,
                                const std::vector<StencilLight>& lights, const std::vector<Caster>& casters,
-                               const CullReceivers& cullReceivers)
+                               const osg::BoundingBoxd& receivers, const CullReceivers& cullReceivers)
 {
     _zfail = _zpass = _rebuilt = 0;
     const osg::Vec3d eye = osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans();
@@ -376,7 +445,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         if (s.hybrid) cullReceivers(s.maskState.get());
         _rebuilt += s.volumes->update(casters, light.position);
         cv.pushStateSet(s.volumeState.get());
-        s.volumes->cull(cv, eye, nearRadius);
+        s.volumes->cull(cv, eye, nearRadius, receivers);
         cv.popStateSet();
         _zfail += s.volumes->getZFailCount();
         _zpass += s.volumes->getZPassCount();

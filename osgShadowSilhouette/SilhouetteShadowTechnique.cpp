@@ -531,7 +531,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.lightsShadowed = static_cast<unsigned int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
 
-    if (stencilMode) cullStencilPasses(cv, vd, mode == HYBRID, lights, slots, casterList, stats);
+    if (stencilMode) cullStencilPasses(cv, vd, mode == HYBRID, lights, slots, casterList, receivers, stats);
     updateViewUniforms(cv, vd, lights, slots);
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
     _statistics = stats;
@@ -567,7 +567,8 @@ SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgU
 
 void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, ViewData& vd, bool hybrid,
                                                   const std::vector<FoundLight>& lights, const std::vector<int>& slots,
-                                                  const std::vector<Caster>& casters, Statistics& stats)
+                                                  const std::vector<Caster>& casters,
+                                                  const osg::BoundingBoxd& receivers, Statistics& stats)
 {
     std::vector<StencilLight> stencilLights;
     int maskSlot = -1;
@@ -579,7 +580,7 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
         if (_debugView == DEBUG_SHADOW_MASK && i == _debugLight) maskSlot = slots[i];
     }
     if (_debugView == DEBUG_SHADOW_MASK && maskSlot < 0) stencilLights.clear(); // the mask light casts nothing
-    vd.stencil->cull(cv, hybrid, _debugView == DEBUG_SHADOW_MASK ? maskSlot : -1, stencilLights, casters,
+    vd.stencil->cull(cv, hybrid, _debugView == DEBUG_SHADOW_MASK ? maskSlot : -1, stencilLights, casters, receivers,
                      [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
     stats.zfailCasters = vd.stencil->getZFailCasters();
     stats.zpassCasters = vd.stencil->getZPassCasters();
