@@ -73,6 +73,13 @@ int main(int argc, char** argv)
         std::cout << osshar::renderOptionsUsage(arguments.getApplicationName());
         return 0;
     }
+    if (arguments.read("--list-modes"))
+    {
+        for (int m = SilhouetteShadowTechnique::SHADOW_MAP; m <= SilhouetteShadowTechnique::SHADOW_VOLUME; ++m)
+            if (SilhouetteShadowTechnique::isModeAvailable(SilhouetteShadowTechnique::Mode(m)))
+                std::cout << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m)) << "\n";
+        return 0;
+    }
     osshar::RenderOptions options;
     std::string error;
     osshar::PreparedScene scene;
@@ -102,8 +109,10 @@ int main(int argc, char** argv)
     if (technique)
     {
         const SilhouetteShadowTechnique::Statistics s = technique->getStatistics();
-        std::printf("lights_found=%u lights_shadowed=%u shadow_passes=%u\n", s.lightsFound, s.lightsShadowed,
-                    s.shadowPasses);
+        std::printf("lights_found=%u lights_shadowed=%u shadow_passes=%u silhouette_edges=%u zfail_casters=%u "
+                    "zpass_casters=%u volumes_rebuilt=%u\n",
+                    s.lightsFound, s.lightsShadowed, s.shadowPasses, s.silhouetteEdges, s.zfailCasters, s.zpassCasters,
+                    s.volumesRebuilt);
     }
 
     if (!options.out.empty())
