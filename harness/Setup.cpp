@@ -1,4 +1,5 @@
 #include "Setup.h"
+#include "Peers.h"
 
 #include <osgDB/ReadFile>
 #include <osgShadow/ShadowedScene>
@@ -89,6 +90,11 @@ bool makeShadowedRoot(const std::string& mode, unsigned int mapSize, PreparedSce
         root = scene.content;
         technique = nullptr;
         return true;
+    }
+    if (isPeerMode(mode))
+    {
+        technique = nullptr;
+        return makePeerRoot(mode, mapSize, scene, root, error);
     }
     SilhouetteShadowTechnique::Mode m;
     if (!SilhouetteShadowTechnique::modeFromName(mode, m))

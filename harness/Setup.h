@@ -27,7 +27,8 @@ struct PreparedScene
 bool prepareScene(const RenderOptions& options, PreparedScene& scene, std::string& error);
 
 /** The root to render for a mode: our technique in a ShadowedScene (technique set), the
- *  content alone for "none". False with a message for an unknown mode. */
+ *  content alone for "none", an osgShadow peer ("osgShadow:ShadowMap", ...) in the
+ *  measurement setup of Peers.h (technique null). False with a message for an unknown mode. */
 bool makeShadowedRoot(const std::string& mode, unsigned int mapSize, PreparedScene& scene,
                       osg::ref_ptr<osg::Node>& root,
                       osg::ref_ptr<osgShadowSilhouette::SilhouetteShadowTechnique>& technique, std::string& error);

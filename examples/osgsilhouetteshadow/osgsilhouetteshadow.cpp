@@ -5,9 +5,14 @@
  *       --out color.png --mask mask.png --reference ref.png --compare ref.png
  *
  * Prints frame_ms_median=..., gpu_ms_median=... and, with --compare or --reference,
- * wrong_pct=... against the exact ray-cast reference. */
+ * wrong_pct=... against the exact ray-cast reference.
+ *
+ * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
+ * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
+ * MEASURE.md (harness/Peers.h); its mask (first light only) is classified from its image. */
 
 #include "Offscreen.h"
+#include "Peers.h"
 #include "RenderOptions.h"
 #include "Setup.h"
 
@@ -16,6 +21,7 @@
 #include <osgGA/TrackballManipulator>
 #include <osgViewer/ViewerEventHandlers>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -121,18 +127,27 @@ int main(int argc, char** argv)
         if (!osgDB::writeImageFile(*color, options.out)) std::cerr << "cannot write " << options.out << "\n";
     }
     const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+    const bool peer = osshar::isPeerMode(options.mode);
+    const unsigned int maskLights = peer ? std::min<unsigned int>(1, scene.lights.size()) : scene.lights.size();
     int status = 0;
-    for (unsigned int i = 0; i < scene.lights.size(); ++i)
+    for (unsigned int i = 0; i < maskLights; ++i)
     {
         ossref::Mask mask, reference;
+        osshar::PeerMask peerMask;
         if (!options.mask.empty() || !options.compare.empty() || !options.diff.empty())
         {
-            if (!technique)
+            if (peer)
+            {
+                peerMask = osshar::renderPeerMask(renderer, root.get(), osshar::makeUnshadowedRoot(scene).get());
+                mask = peerMask.mask;
+            }
+            else if (!technique)
             {
                 std::cerr << "osgsilhouetteshadow: --mask needs one of this project's modes\n";
                 return 1;
             }
-            mask = renderMask(renderer, *technique, i);
+            else
+                mask = renderMask(renderer, *technique, i);
             if (!options.mask.empty() && !ossref::writeMask(mask, perLightName(options.mask, i)))
                 std::cerr << "cannot write " << perLightName(options.mask, i) << "\n", status = 1;
         }
@@ -142,6 +157,14 @@ int main(int argc, char** argv)
             if (!options.reference.empty()) ossref::writeMask(reference, perLightName(options.reference, i));
         }
         if (mask.empty() || reference.empty()) continue;
+        if (peer)
+        {
+            long long excluded = 0;
+            const ossref::Light light = osshar::referenceLight(scene.lights[i]);
+            reference = osshar::excludeFacingDisagreement(
+                reference, osshar::referenceFacing(*scene.content, refCamera, light), peerMask.vertexFacing, excluded);
+            std::printf("facing_excluded_pixels=%lld\n", excluded);
+        }
         const ossref::Comparison c = ossref::compareMasks(mask, reference);
         if (!c.valid)
         {
