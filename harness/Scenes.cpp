@@ -1,11 +1,17 @@
 #include "Scenes.h"
 #include "Meshes.h"
 
+#include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
+#include <osg/MatrixTransform>
 #include <osg/Material>
 #include <osg/NodeVisitor>
+#include <osgDB/FileUtils>
+#include <osgDB/ReadFile>
+#include <osgUtil/SmoothingVisitor>
 
 #include <cmath>
+#include <iostream>
 
 namespace osshar {
 
@@ -91,6 +97,154 @@ Scene cubesScene()
     return s;
 }
 
+/** Appends `part`, transformed by m (rotation, translation, uniform scale), to `mesh`. */
+void appendTransformed(osg::Geometry& mesh, const osg::Geometry& part, const osg::Matrixd& m)
+{
+    osg::Vec3Array* v = static_cast<osg::Vec3Array*>(mesh.getVertexArray());
+    osg::Vec3Array* n = static_cast<osg::Vec3Array*>(mesh.getNormalArray());
+    osg::DrawElementsUInt* idx = static_cast<osg::DrawElementsUInt*>(mesh.getPrimitiveSet(0));
+    const osg::Vec3Array* pv = static_cast<const osg::Vec3Array*>(part.getVertexArray());
+    const osg::Vec3Array* pn = static_cast<const osg::Vec3Array*>(part.getNormalArray());
+    const unsigned int base = static_cast<unsigned int>(v->size());
+    for (std::size_t i = 0; i < pv->size(); ++i)
+    {
+        v->push_back(osg::Vec3((*pv)[i] * m));
+        osg::Vec3 nn = osg::Matrixd::transform3x3((*pn)[i], m);
+        nn.normalize();
+        n->push_back(nn);
+    }
+    for (unsigned int j = 0; j < part.getNumPrimitiveSets(); ++j)
+        if (const osg::DrawElementsUInt* pi = dynamic_cast<const osg::DrawElementsUInt*>(part.getPrimitiveSet(j)))
+            for (unsigned int k : *pi) idx->push_back(base + k);
+}
+
+osg::ref_ptr<osg::Geometry> emptyMesh(const char* name)
+{
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setName(name);
+    g->setVertexArray(new osg::Vec3Array);
+    g->setNormalArray(new osg::Vec3Array, osg::Array::BIND_PER_VERTEX);
+    g->addPrimitiveSet(new osg::DrawElementsUInt(GL_TRIANGLES));
+    g->setUseDisplayList(false);
+    g->setUseVertexBufferObjects(true);
+    return g;
+}
+
+/** A branch of radius r and length len along +z of frame m, and its three sub-branches. */
+void addBranch(osg::Geometry& mesh, const osg::Matrixd& m, float r, float len, int depth)
+{
+    appendTransformed(mesh, *makeCylinder(osg::Vec3(), r, len, 12), m);
+    if (depth == 0) return;
+    for (int i = 0; i < 3; ++i)
+    {
+        const double yaw = osg::DegreesToRadians(120.0 * i + 40.0 * depth);
+        const osg::Matrixd child = osg::Matrixd::rotate(osg::DegreesToRadians(35.0), osg::Vec3d(1, 0, 0)) *
+                                   osg::Matrixd::rotate(yaw, osg::Vec3d(0, 0, 1)) *
+                                   osg::Matrixd::translate(0, 0, len * 0.97) * m;
+        addBranch(mesh, child, r * 0.62f, len * 0.72f, depth - 1);
+    }
+}
+
+Scene treeScene()
+{
+    Scene s{"tree", new osg::Group, {}};
+    s.root->setName("tree: thin branches");
+    s.root->addChild(coloured(makeGround(0, 0, 24), GROUND));
+    // 364 branches (17k triangles), radius 0.14 at the trunk down to 0.013 at the twigs.
+    osg::ref_ptr<osg::Geometry> tree = emptyMesh("tree");
+    addBranch(*tree, osg::Matrixd::identity(), 0.14f, 2.5f, 5);
+    s.root->addChild(coloured(tree, osg::Vec4(0.55f, 0.4f, 0.25f, 1)));
+    s.root->addChild(makeLight(osg::Vec4(0.45f, -0.35f, 0.82f, 0.0f)));
+    s.view = {osg::Vec3d(2, -13, 7), osg::Vec3d(-0.5, 0.5, 2.5), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
+const char* const BUNNY_FILE = "/usr/share/glmark2/models/bunny.obj";
+
+Scene bunnyScene()
+{
+    Scene s{"bunny", nullptr, {}};
+    if (!osgDB::fileExists(BUNNY_FILE))
+    {
+        std::cerr << "scene 'bunny' needs " << BUNNY_FILE << " (Debian package glmark2-data)" << std::endl;
+        return s;
+    }
+    osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(BUNNY_FILE);
+    if (!model)
+    {
+        std::cerr << "scene 'bunny': cannot read " << BUNNY_FILE << " (osgDB's obj plugin)" << std::endl;
+        return s;
+    }
+    osgUtil::SmoothingVisitor smooth; // the file has no normals
+    model->accept(smooth);
+    // osgDB's obj plugin turns the y-up file z-up; make it 3.5 units high, turned 30 degrees,
+    // standing on z = 0.
+    osg::ref_ptr<osg::MatrixTransform> fitted = new osg::MatrixTransform;
+    fitted->addChild(model.get());
+    fitted->setMatrix(osg::Matrixd::rotate(osg::DegreesToRadians(-30.0), osg::Vec3d(0, 0, 1)));
+    osg::ComputeBoundsVisitor turned;
+    fitted->accept(turned);
+    const osg::BoundingBox bb = turned.getBoundingBox();
+    const double scale = 3.5 / (bb.zMax() - bb.zMin());
+    fitted->postMult(osg::Matrixd::translate(-bb.center().x(), -bb.center().y(), -bb.zMin()) *
+                     osg::Matrixd::scale(scale, scale, scale));
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setColorMode(osg::Material::OFF);
+    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.85f, 0.8f, 0.7f, 1));
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.85f, 0.8f, 0.7f, 1));
+    m->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0.3f, 0.3f, 0.3f, 1.0f));
+    m->setShininess(osg::Material::FRONT_AND_BACK, 32.0f);
+    fitted->getOrCreateStateSet()->setAttributeAndModes(m.get());
+    s.root = new osg::Group;
+    s.root->setName("bunny: scanned mesh on a ground plane");
+    s.root->addChild(coloured(makeGround(0, 0, 16), GROUND));
+    s.root->addChild(fitted.get());
+    s.root->addChild(makeLight(osg::Vec4(0.45f, -0.35f, 0.82f, 0.0f)));
+    s.view = {osg::Vec3d(1.5, -10, 5.5), osg::Vec3d(0, 0.5, 1.2), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
+/** The default scene's light source (its last child). */
+osg::Light* lightOf(Scene& s)
+{
+    return static_cast<osg::LightSource*>(s.root->getChild(s.root->getNumChildren() - 1))->getLight();
+}
+
+/** A direction toward the light at azimuth (0.79, -0.61) (the default scene's) and `elevationDeg`. */
+osg::Vec4 defaultAzimuthLight(double elevationDeg)
+{
+    const double e = osg::DegreesToRadians(elevationDeg);
+    osg::Vec3d h(0.45, -0.35, 0.0);
+    h.normalize();
+    return osg::Vec4(float(h.x() * std::cos(e)), float(h.y() * std::cos(e)), float(std::sin(e)), 0.0f);
+}
+
+Scene duelingScene()
+{
+    // "Dueling frusta": the camera looks toward the light (30 degrees up, from the default
+    // scene's azimuth), so light and view frusta face each other.
+    Scene s = defaultScene();
+    s.name = "dueling";
+    s.root->setName("default scene, camera facing the light");
+    lightOf(s)->setPosition(defaultAzimuthLight(30.0));
+    s.view = {osg::Vec3d(-12.5, 10.0, 6.5), osg::Vec3d(0.5, -0.5, 0.5), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
+Scene grazingScene()
+{
+    // The light 1.5 degrees above the ground: the ground itself is in the grazing band, the
+    // long shadows fall on the objects and on a wall at x = -8 facing the light.
+    Scene s = defaultScene();
+    s.name = "grazing";
+    s.root->setName("default scene, light 1.5 degrees above the ground");
+    s.root->insertChild(1, coloured(makeBox(osg::Vec3(-8.0f, 2.0f, 2.0f), osg::Vec3(0.3f, 14.0f, 4.0f)),
+                                    osg::Vec4(0.7f, 0.7f, 0.75f, 1)));
+    lightOf(s)->setPosition(defaultAzimuthLight(1.5));
+    s.view = {osg::Vec3d(3, -16, 10), osg::Vec3d(-2, 1, 0.5), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
 class FindLightsVisitor : public osg::NodeVisitor
 {
 public:
@@ -113,7 +267,7 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles", "cubes"};
+    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing"};
 }
 
 Scene createScene(const std::string& name)
@@ -122,6 +276,10 @@ Scene createScene(const std::string& name)
     if (name == "spheres") return spheresScene();
     if (name == "poles") return polesScene();
     if (name == "cubes") return cubesScene();
+    if (name == "tree") return treeScene();
+    if (name == "bunny") return bunnyScene();
+    if (name == "dueling") return duelingScene();
+    if (name == "grazing") return grazingScene();
     return Scene{name, nullptr, {}};
 }
 
