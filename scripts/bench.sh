@@ -17,7 +17,7 @@ OUT=${OUT:-docs/bench}
 FRAMES=20
 [ -n "${QUICK:-}" ] && FRAMES=5
 
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-RelWithDebInfo} >/dev/null
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} >/dev/null
 cmake --build "$BUILD_DIR" -j "${JOBS:-2}" --target osgsilhouette-bench >/dev/null
 
 export OSG_LIBRARY_PATH="$PWD/$BUILD_DIR/lib"
