@@ -1,5 +1,6 @@
 #include <osgShadowSilhouette/SilhouetteMapPass>
 #include <osgShadowSilhouette/ShaderConstants>
+#include <osgShadowSilhouette/SilhouettePoints>
 
 #include "ShaderSource.h"
 
@@ -14,13 +15,15 @@ namespace {
 osg::ref_ptr<osg::Texture2D> silhouetteTexture()
 {
     osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
-    t->setInternalFormat(GL_RG16F);
-    t->setSourceFormat(GL_RG);
+    t->setInternalFormat(GL_R32F);
+    t->setSourceFormat(GL_RED);
     t->setSourceType(GL_FLOAT);
     t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
     t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER); // outside: the default point
+    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
+    const double centre = defaultSilhouetteValue();
+    t->setBorderColor(osg::Vec4d(centre, centre, centre, centre));
     return t;
 }
 
@@ -54,11 +57,27 @@ osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createTexture(unsigned int size)
 osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createDefaultTexture()
 {
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(1, 1, 1, GL_RG, GL_FLOAT);
-    float* texel = reinterpret_cast<float*>(image->data());
-    texel[0] = texel[1] = 0.5f;
+    image->allocateImage(1, 1, 1, GL_RED, GL_FLOAT);
+    *reinterpret_cast<float*>(image->data()) = defaultSilhouetteValue();
     osg::ref_ptr<osg::Texture2D> t = silhouetteTexture();
     t->setImage(image.get());
+    return t;
+}
+
+osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createLitDepthTexture()
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT);
+    *reinterpret_cast<float*>(image->data()) = 1.0f;
+    osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D(image.get());
+    t->setInternalFormat(GL_DEPTH_COMPONENT24);
+    t->setShadowComparison(false);
+    t->setShadowTextureMode(osg::Texture::LUMINANCE);
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER);
+    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
+    t->setBorderColor(osg::Vec4d(1.0, 1.0, 1.0, 1.0));
     return t;
 }
 
@@ -74,7 +93,7 @@ SilhouetteMapPass::SilhouetteMapPass(unsigned int mapSize, const osg::StateSet& 
     c.setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
     c.setCullingMode(osg::CullSettings::NO_CULLING);
     c.setClearMask(GL_COLOR_BUFFER_BIT);
-    c.setClearColor(osg::Vec4(0.5f, 0.5f, 0.0f, 0.0f)); // every texel: its centre
+    c.setClearColor(osg::Vec4(defaultSilhouetteValue(), 0.0f, 0.0f, 0.0f)); // every texel: its centre
     // Camera::setViewport() stores the viewport in the camera's StateSet: own copy first.
     c.setStateSet(new osg::StateSet(shared, osg::CopyOp::SHALLOW_COPY));
     c.setViewport(0, 0, mapSize, mapSize);

@@ -277,6 +277,7 @@ void SilhouetteShadowTechnique::init()
     _receiverProgram->addShader(_silhouetteFragmentShader.get());
     _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
     _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
+    _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
 
     _stencilProgram = new osg::Program;
     _stencilProgram->setName("osgShadowSilhouette stencil passes");
@@ -338,6 +339,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->resizeGLObjectBuffers(maxSize);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
+    if (_litRawDepthTexture) _litRawDepthTexture->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _viewDataMap)
     {
         ViewData& vd = *entry.second;
@@ -359,6 +361,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->releaseGLObjects(state);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
+    if (_litRawDepthTexture) _litRawDepthTexture->releaseGLObjects(state);
     for (const auto& entry : _viewDataMap)
     {
         const ViewData& vd = *entry.second;
@@ -503,10 +506,12 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize))
             pass = createLightPass(slot);
         pass.frustum = fitLightFrustum(lights[i].description, region, casters);
-        osg::Texture2D* texture = _litDummyTexture.get();
+        osg::Texture2D* texture = litTexture(silhouette);
         osg::Texture2D* silhouetteMap = _defaultSilhouetteTexture.get();
         if (pass.frustum.valid && mode != SHADOW_VOLUME)
         {
+            // SILHOUETTE_MAP reads raw depths and compares them itself.
+            if (pass.depthTexture->getShadowComparison() == silhouette) pass.depthTexture->setShadowComparison(!silhouette);
             cullDepthPass(cv, pass);
             texture = pass.depthTexture.get();
             ++stats.shadowPasses;
@@ -525,7 +530,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         slots[i] = static_cast<int>(slot++);
     }
     for (; slot < _maxShadowLights; ++slot)
-        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(),
+        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
                                                          osg::StateAttribute::ON);
     bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
     stats.lightsShadowed = static_cast<unsigned int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));

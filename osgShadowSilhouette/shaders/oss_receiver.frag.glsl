@@ -27,7 +27,12 @@ uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform int oss_maskLight;
 uniform sampler2D oss_baseTexture;
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
-uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+#ifdef OSS_SILHOUETTE_MAP
+#define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
+#else
+#define OSS_SHADOW_SAMPLER sampler2DShadow
+#endif
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 
 float oss_shadowTerm(int light, vec4 eyePosition);
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
@@ -38,7 +43,7 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // In the silhouette-map mode the term comes from oss_silhouetteTerm() (oss_silhouette.frag.glsl).
 #ifdef OSS_SILHOUETTE_MAP
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
-float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 vec4 oss_silhouetteDebug(vec4 eyePosition);
 #define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #else

@@ -18,11 +18,16 @@ uniform int oss_numLights;                          // lights lit by the receive
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
 uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 unshadowed
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];// eye space -> light texture space [0,1]^3
-uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+#ifdef OSS_SILHOUETTE_MAP
+#define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
+#else
+#define OSS_SHADOW_SAMPLER sampler2DShadow
+#endif
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 #ifdef OSS_SILHOUETTE_MAP
 // Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
-float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.

@@ -22,7 +22,8 @@ struct oss_SilhouetteSample
 {
     ivec2 texel;   // silhouette texel = the depth samples texel .. texel + 1
     vec2 local;    // position in that texel, [0, 1]^2
-    vec4 lit;      // depth tests of its corners as textureGather returns them: NW, NE, SE, SW
+    vec4 depths;   // depth samples at its corners as textureGather returns them: NW, NE, SE, SW
+    vec4 lit;      // their depth tests (GL_LEQUAL: 1 where the sample is not behind), same order
     vec3 coord;    // light texture coordinates and depth
     vec2 depthSlope; // d depth / d texture coordinate of the receiver's plane
 };
@@ -39,7 +40,7 @@ vec2 oss_depthSlope(vec3 coord)
 }
 
 // False for points behind a perspective light (outside its map: lit).
-bool oss_silhouetteSample(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePosition, out oss_SilhouetteSample s)
+bool oss_silhouetteSample(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition, out oss_SilhouetteSample s)
 {
     vec4 c = eyeToShadow * eyePosition;
     vec3 t = c.xyz / c.w;
@@ -47,6 +48,7 @@ bool oss_silhouetteSample(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePo
     s.coord = t;
     s.texel = ivec2(0);
     s.local = vec2(0.5);
+    s.depths = vec4(1.0);
     s.lit = vec4(1.0);
     if (c.w <= 0.0)
         return false;
@@ -56,16 +58,34 @@ bool oss_silhouetteSample(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePo
     s.texel = ivec2(cell);
     s.local = u - cell;
     // Gather at the middle of the four samples, so that the footprint is exactly these four.
-    s.lit = textureGather(depthMap, (cell + 1.0) / size, t.z);
+    s.depths = textureGather(depthMap, (cell + 1.0) / size);
+    s.lit = vec4(lessThanEqual(vec4(t.z), s.depths));
     return true;
 }
 
-// A neighbour's stored point in the frame of the centre texel; outside the map: its centre.
-vec2 oss_silhouettePoint(sampler2D silhouetteMap, ivec2 texel, ivec2 offset)
+// Four stored points (decodeSilhouettePoint()) as their x and y coordinates.
+void oss_decodePoints(vec4 stored, out vec4 x, out vec4 y)
 {
-    ivec2 q = texel + offset;
-    bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(silhouetteMap, 0)));
-    return (inside ? texelFetch(silhouetteMap, q, 0).xy : vec2(0.5)) + vec2(offset);
+    vec4 hi = floor(stored / 4096.0);
+    x = hi / 2048.0;
+    y = (stored - hi * 4096.0) / 2048.0;
+}
+
+// The five silhouette points in the frame of the centre texel, from two gathers: around
+// (i+1, j+1) the texels N, NE, E, C and around (i, j) the texels W, C, S, SW (gather order
+// (0,1), (1,1), (1,0), (0,0)). Outside the map the border holds the default point.
+void oss_silhouettePoints(sampler2D silhouetteMap, ivec2 texel, out vec2 c, out vec2 e, out vec2 n, out vec2 w,
+                          out vec2 s)
+{
+    vec2 size = vec2(textureSize(silhouetteMap, 0));
+    vec4 x1, y1, x0, y0;
+    oss_decodePoints(textureGather(silhouetteMap, (vec2(texel) + 1.0) / size), x1, y1);
+    oss_decodePoints(textureGather(silhouetteMap, vec2(texel) / size), x0, y0);
+    c = vec2(x1.w, y1.w);
+    e = vec2(x1.z + 1.0, y1.z);
+    n = vec2(x1.x, y1.x + 1.0);
+    w = vec2(x0.x - 1.0, y0.x);
+    s = vec2(x0.z, y0.z - 1.0);
 }
 
 float oss_cross2(vec2 a, vec2 b)
@@ -73,26 +93,34 @@ float oss_cross2(vec2 a, vec2 b)
     return a.x * b.y - a.y * b.x;
 }
 
-// p in the closed triangle (a, b, c) of either orientation; never in one of zero area.
-bool oss_insideTriangle(vec2 p, vec2 a, vec2 b, vec2 c)
+// p in the closed wedge (triangle) (c, x, y) of either orientation, never in one of zero
+// area. sx = cross(x - c, p - c) and sy = cross(y - c, p - c) are shared between the wedges
+// around c; the same test as insideTriangle() in SilhouettePoints.
+bool oss_insideWedge(vec2 p, vec2 c, vec2 x, vec2 y, float sx, float sy)
 {
-    if (oss_cross2(b - a, c - a) == 0.0)
+    if (oss_cross2(x - c, y - c) == 0.0)
         return false;
-    vec3 d = vec3(oss_cross2(b - a, p - a), oss_cross2(c - b, p - b), oss_cross2(a - c, p - c));
+    vec3 d = vec3(sx, oss_cross2(y - x, p - x), -sy);
     return !(any(lessThan(d, vec3(0.0))) && any(greaterThan(d, vec3(0.0))));
 }
 
 // The corner (0 SW, 1 SE, 2 NE, 3 NW) whose wedge holds p; the nearest corner when none does.
+// The eight wedges fan around c: (c, e, NE), (c, NE, n), (c, n, NW), (c, NW, w), (c, w, SW),
+// (c, SW, s), (c, s, SE), (c, SE, e); two per corner, tried NE, NW, SW, SE.
 int oss_wedgeCorner(vec2 c, vec2 e, vec2 n, vec2 w, vec2 s, vec2 p)
 {
     const vec2 SW = vec2(0.0, 0.0), SE = vec2(1.0, 0.0), NE = vec2(1.0, 1.0), NW = vec2(0.0, 1.0);
-    if (oss_insideTriangle(p, c, e, NE) || oss_insideTriangle(p, c, NE, n))
+    vec2 q = p - c;
+    float se = oss_cross2(e - c, q), sNE = oss_cross2(NE - c, q), sn = oss_cross2(n - c, q);
+    float sNW = oss_cross2(NW - c, q), sw = oss_cross2(w - c, q), sSW = oss_cross2(SW - c, q);
+    float ss = oss_cross2(s - c, q), sSE = oss_cross2(SE - c, q);
+    if (oss_insideWedge(p, c, e, NE, se, sNE) || oss_insideWedge(p, c, NE, n, sNE, sn))
         return 2;
-    if (oss_insideTriangle(p, c, n, NW) || oss_insideTriangle(p, c, NW, w))
+    if (oss_insideWedge(p, c, n, NW, sn, sNW) || oss_insideWedge(p, c, NW, w, sNW, sw))
         return 3;
-    if (oss_insideTriangle(p, c, w, SW) || oss_insideTriangle(p, c, SW, s))
+    if (oss_insideWedge(p, c, w, SW, sw, sSW) || oss_insideWedge(p, c, SW, s, sSW, ss))
         return 0;
-    if (oss_insideTriangle(p, c, s, SE) || oss_insideTriangle(p, c, SE, e))
+    if (oss_insideWedge(p, c, s, SE, ss, sSE) || oss_insideWedge(p, c, SE, e, sSE, se))
         return 1;
     return p.x >= 0.5 ? (p.y >= 0.5 ? 2 : 1) : (p.y >= 0.5 ? 3 : 0);
 }
@@ -101,28 +129,19 @@ int oss_wedgeCorner(vec2 c, vec2 e, vec2 n, vec2 w, vec2 s, vec2 p)
 // corner rather than against the sample's own depth: near a caster's own silhouette (where
 // it receives light at grazing angles) the corners lie up to a texel away on a steep slope.
 // Order as textureGather: NW, NE, SE, SW.
-vec4 oss_planeBiasedTests(sampler2DShadow depthMap, oss_SilhouetteSample s)
+vec4 oss_planeBiasedTests(vec2 mapSize, oss_SilhouetteSample s)
 {
-    vec2 size = vec2(textureSize(depthMap, 0));
-    const vec2 corners[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(1.0, 0.0), vec2(0.0, 0.0));
-    vec4 lit;
-    for (int k = 0; k < 4; ++k)
-    {
-        vec2 offset = (corners[k] - s.local) / size;
-        float ref = s.coord.z + clamp(dot(s.depthSlope, offset), -OSS_MAX_PLANE_BIAS, OSS_MAX_PLANE_BIAS);
-        lit[k] = texture(depthMap, vec3((vec2(s.texel) + corners[k] + 0.5) / size, ref));
-    }
-    return lit;
+    vec4 dx = (vec4(0.0, 1.0, 1.0, 0.0) - s.local.x) / mapSize.x;
+    vec4 dy = (vec4(1.0, 1.0, 0.0, 0.0) - s.local.y) / mapSize.y;
+    vec4 bias = clamp(dx * s.depthSlope.x + dy * s.depthSlope.y, -OSS_MAX_PLANE_BIAS, OSS_MAX_PLANE_BIAS);
+    return vec4(lessThanEqual(s.coord.z + bias, s.depths));
 }
 
 // The shadow test of a silhouette pixel from the five silhouette points.
 float oss_silhouetteReconstruct(sampler2D silhouetteMap, oss_SilhouetteSample s)
 {
-    vec2 c = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 0));
-    vec2 e = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(1, 0));
-    vec2 n = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 1));
-    vec2 w = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(-1, 0));
-    vec2 so = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, -1));
+    vec2 c, e, n, w, so;
+    oss_silhouettePoints(silhouetteMap, s.texel, c, e, n, w, so);
     vec4 byCorner = s.lit.wzyx; // SW, SE, NE, NW
     return byCorner[oss_wedgeCorner(c, e, n, w, so, s.local)];
 }
@@ -134,7 +153,7 @@ bool oss_isSilhouettePixel(oss_SilhouetteSample s)
 }
 
 // 1 lit, 0 shadowed.
-float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
@@ -142,7 +161,7 @@ float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4
     float lit = s.lit.x;
     if (oss_isSilhouettePixel(s)) // the branch that lets GPUs skip the reconstruction
     {
-        s.lit = oss_planeBiasedTests(depthMap, s);
+        s.lit = oss_planeBiasedTests(vec2(textureSize(depthMap, 0)), s);
         lit = oss_isSilhouettePixel(s) ? oss_silhouetteReconstruct(silhouetteMap, s) : s.lit.x;
     }
     return lit;
@@ -150,12 +169,13 @@ float oss_silhouetteTerm(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4
 
 // Debug view: the silhouette map projected onto the scene. Silhouette texels that hold an
 // edge point are tinted yellow, their point drawn as a red dot; the dual grid is dark.
-vec4 oss_silhouetteMapOverlay(sampler2DShadow depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+vec4 oss_silhouetteMapOverlay(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
         return vec4(0.0);
-    vec2 c = oss_silhouettePoint(silhouetteMap, s.texel, ivec2(0, 0));
+    vec2 c, e, n, w, so;
+    oss_silhouettePoints(silhouetteMap, s.texel, c, e, n, w, so);
     vec2 toEdge = min(s.local, 1.0 - s.local);
     vec2 perPixel = fwidth(s.local);
     if (any(lessThan(toEdge, perPixel)))
@@ -168,7 +188,7 @@ vec4 oss_silhouetteMapOverlay(sampler2DShadow depthMap, sampler2D silhouetteMap,
 }
 
 // Debug view: 1 at silhouette pixels.
-float oss_silhouettePixelOverlay(sampler2DShadow depthMap, mat4 eyeToShadow, vec4 eyePosition)
+float oss_silhouettePixelOverlay(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     return oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s) && oss_isSilhouettePixel(s) ? 1.0 : 0.0;
@@ -178,7 +198,7 @@ float oss_silhouettePixelOverlay(sampler2DShadow depthMap, mat4 eyeToShadow, vec
 uniform int oss_maskLight;
 uniform int oss_lightIndex[8];
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
-uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2D oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
 int oss_shadowSlotOf(int light);
 

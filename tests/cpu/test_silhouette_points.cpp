@@ -286,3 +286,22 @@ TEST(Wedge, StraightSilhouetteIsReconstructedExactly)
 }
 
 } // namespace
+
+// Storage: one float per texel, each coordinate to 1/2048 of a texel.
+TEST(Storage, EncodingRoundTrips)
+{
+    EXPECT_EQ(decodeSilhouettePoint(defaultSilhouetteValue()), osg::Vec2d(0.5, 0.5));
+    EXPECT_EQ(decodeSilhouettePoint(encodeSilhouettePoint({0, 0})), osg::Vec2d(0, 0));
+    EXPECT_EQ(decodeSilhouettePoint(encodeSilhouettePoint({1, 1})), osg::Vec2d(1, 1));
+    EXPECT_EQ(decodeSilhouettePoint(encodeSilhouettePoint({1, 0})), osg::Vec2d(1, 0));
+    EXPECT_EQ(decodeSilhouettePoint(encodeSilhouettePoint({2, -1})), osg::Vec2d(1, 0)); // clamped
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> in(0.0, 1.0);
+    for (int i = 0; i < 10000; ++i)
+    {
+        const osg::Vec2d p(in(rng), in(rng));
+        const osg::Vec2d q = decodeSilhouettePoint(encodeSilhouettePoint(p));
+        EXPECT_LE(std::abs(q.x() - p.x()), 0.5 / SILHOUETTE_POINT_STEPS + 1e-12);
+        EXPECT_LE(std::abs(q.y() - p.y()), 0.5 / SILHOUETTE_POINT_STEPS + 1e-12);
+    }
+}
