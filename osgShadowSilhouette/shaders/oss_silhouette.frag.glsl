@@ -168,7 +168,8 @@ float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeTo
 }
 
 // Debug view: the silhouette map projected onto the scene. Silhouette texels that hold an
-// edge point are tinted yellow, their point drawn as a red dot; the dual grid is dark.
+// edge point are tinted yellow and their point drawn as a red dot; where a texel covers
+// several pixels the dual grid is drawn too.
 vec4 oss_silhouetteMapOverlay(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
@@ -176,15 +177,14 @@ vec4 oss_silhouetteMapOverlay(sampler2D depthMap, sampler2D silhouetteMap, mat4 
         return vec4(0.0);
     vec2 c, e, n, w, so;
     oss_silhouettePoints(silhouetteMap, s.texel, c, e, n, w, so);
-    vec2 toEdge = min(s.local, 1.0 - s.local);
     vec2 perPixel = fwidth(s.local);
-    if (any(lessThan(toEdge, perPixel)))
-        return vec4(0.1, 0.1, 0.1, 0.6);
-    if (all(equal(c, vec2(0.5))))
-        return vec4(0.0);
-    if (distance(s.local, c) < max(0.12, 1.5 * max(perPixel.x, perPixel.y)))
+    float texelPixels = 1.0 / max(max(perPixel.x, perPixel.y), 1e-6);
+    bool moved = any(notEqual(c, vec2(0.5)));
+    if (moved && distance(s.local, c) < max(0.12, 1.5 / texelPixels))
         return vec4(1.0, 0.0, 0.0, 1.0);
-    return vec4(1.0, 0.9, 0.2, 0.35);
+    if (texelPixels > 6.0 && any(lessThan(min(s.local, 1.0 - s.local), perPixel)))
+        return vec4(0.1, 0.1, 0.1, 0.5);
+    return moved ? vec4(1.0, 0.9, 0.2, 0.6) : vec4(0.0);
 }
 
 // Debug view: 1 at silhouette pixels.

@@ -12,11 +12,14 @@
 #include <osgShadowSilhouette/SilhouettePoints>
 
 #include <osg/Geode>
+#include <osgDB/WriteFile>
 #include <osgUtil/CullVisitor>
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <memory>
 
 using namespace osgShadowSilhouette;
@@ -185,7 +188,16 @@ struct ModeScore
 {
     double wrongPct = -1.0;
     unsigned int silhouetteEdges = 0;
+    double silhouettePixelPct = -1.0; ///< SILHOUETTE_MAP: share of geometry pixels shaded by reconstruction
 };
+
+/** Pixels whose RGB differs between two captures of the same size. */
+long long differingPixels(const osg::Image& a, const osg::Image& b)
+{
+    long long n = 0;
+    for (int i = 0; i < a.s() * a.t(); ++i) n += std::memcmp(a.data() + 3 * i, b.data() + 3 * i, 3) != 0;
+    return n;
+}
 
 ModeScore scoreMode(const std::string& sceneName, const std::string& mode, unsigned int mapSize)
 {
@@ -221,6 +233,25 @@ ModeScore scoreMode(const std::string& sceneName, const std::string& mode, unsig
     EXPECT_EQ(technique->getStatistics().effectiveMode, technique->getMode());
     score.wrongPct = c.wrongPct;
     score.silhouetteEdges = technique->getStatistics().silhouetteEdges;
+    if (technique->getMode() == SilhouetteShadowTechnique::SILHOUETTE_MAP)
+    {
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_NONE);
+        osg::ref_ptr<osg::Image> plain = renderer.renderAndCapture();
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SILHOUETTE_PIXELS);
+        osg::ref_ptr<osg::Image> tinted = renderer.renderAndCapture();
+        score.silhouettePixelPct = 100.0 * differingPixels(*plain, *tinted) / double(c.geometryPixels);
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SILHOUETTE_MAP);
+        osg::ref_ptr<osg::Image> projected = renderer.renderAndCapture();
+        if (const char* dir = std::getenv("OSS_BINARY_DIR")) // the debug views, for inspection
+        {
+            const std::string stem = std::string(dir) + "/silhouette_" + sceneName + "_" + std::to_string(mapSize);
+            osgDB::writeImageFile(*tinted, stem + "_pixels.png");
+            osgDB::writeImageFile(*projected, stem + "_map.png");
+        }
+        EXPECT_GT(differingPixels(*plain, *projected), 0);
+        std::cout << sceneName << " " << mode << " " << mapSize << ": wrong_pct " << c.wrongPct
+                  << " silhouette_pixel_pct " << score.silhouettePixelPct << "\n";
+    }
     return score;
 }
 
@@ -237,6 +268,9 @@ TEST(SilhouetteMapAccuracy, DefaultSceneAt512IsFourTimesBetterThanTheShadowMap)
     EXPECT_GT(silhouette.silhouetteEdges, 100u);
     EXPECT_LT(silhouette.wrongPct, 0.02);
     EXPECT_LT(4.0 * silhouette.wrongPct, shadowMap.wrongPct);
+    // The reconstruction runs at few pixels (the paper reports about 1%); the tint must show them.
+    EXPECT_GT(silhouette.silhouettePixelPct, 0.05);
+    EXPECT_LT(silhouette.silhouettePixelPct, 6.0); // measured about 3% at 512
 }
 
 // Curved casters (spheres, a torus): the reconstruction follows their outlines.
