@@ -1,0 +1,165 @@
+#include "PseudoLoaderOptions.h"
+
+#include <osg/Notify>
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <type_traits>
+
+namespace osssil {
+
+using osgShadowSilhouette::SilhouetteShadowTechnique;
+
+namespace {
+
+std::string lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+void warnValue(const std::string& key, const std::string& value, const std::string& why)
+{
+    OSG_WARN << "osgShadowSilhouette pseudo-loader: option " << key << "=" << value << " " << why << std::endl;
+}
+
+/** Parses an unsigned or signed integer; the whole text must be a number. */
+template<typename T>
+bool parseNumber(const std::string& text, T& value)
+{
+    std::istringstream in(text);
+    long long v = 0;
+    if (!(in >> v) || !in.eof()) return false;
+    if (v < 0 && std::is_unsigned<T>::value) return false;
+    value = T(v);
+    return true;
+}
+
+bool parseFloat(const std::string& text, float& value)
+{
+    std::istringstream in(text);
+    return (in >> value) && in.eof();
+}
+
+bool parseBool(const std::string& text, bool& value)
+{
+    const std::string t = lower(text);
+    if (t == "on" || t == "true" || t == "1") value = true;
+    else if (t == "off" || t == "false" || t == "0") value = false;
+    else return false;
+    return true;
+}
+
+bool parseDebugView(const std::string& text, SilhouetteShadowTechnique::DebugView& view)
+{
+    const std::string t = lower(text);
+    if (t == "none" || t == "debug_none") view = SilhouetteShadowTechnique::DEBUG_NONE;
+    else if (t == "mask" || t == "debug_shadow_mask") view = SilhouetteShadowTechnique::DEBUG_SHADOW_MASK;
+    else return false;
+    return true;
+}
+
+/** Sets a number through the technique's setter and reports a value the setter changed. */
+template<typename T, typename Setter, typename Getter>
+void applyNumber(const std::string& key, const std::string& text, SilhouetteShadowTechnique& t, Setter set, Getter get)
+{
+    T value{};
+    if (!parseNumber(text, value))
+    {
+        warnValue(key, text, "is not a valid number; ignored");
+        return;
+    }
+    (t.*set)(value);
+    if ((t.*get)() != value) warnValue(key, text, "is out of range; using " + std::to_string((t.*get)()));
+}
+
+bool applyOne(const std::string& key, const std::string& value, SilhouetteShadowTechnique& t)
+{
+    const std::string k = lower(key);
+    if (k == "mode")
+    {
+        SilhouetteShadowTechnique::Mode mode;
+        if (SilhouetteShadowTechnique::modeFromName(value, mode)) t.setMode(mode);
+        else warnValue(key, value, "is not a mode (shadowmap, silhouette, hybrid, volume); ignored");
+    }
+    else if (k == "shadowmapsize" || k == "mapsize")
+        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setShadowMapSize, &SilhouetteShadowTechnique::getShadowMapSize);
+    else if (k == "lightnum")
+        applyNumber<int>(key, value, t, &SilhouetteShadowTechnique::setLightNum, &SilhouetteShadowTechnique::getLightNum);
+    else if (k == "maxshadowlights")
+        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setMaxShadowLights, &SilhouetteShadowTechnique::getMaxShadowLights);
+    else if (k == "basetextureunit")
+        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setBaseTextureUnit, &SilhouetteShadowTechnique::getBaseTextureUnit);
+    else if (k == "debuglight")
+        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setDebugLight, &SilhouetteShadowTechnique::getDebugLight);
+    else if (k == "debugview")
+    {
+        SilhouetteShadowTechnique::DebugView view;
+        if (parseDebugView(value, view)) t.setDebugView(view);
+        else warnValue(key, value, "is not a debug view (none, mask); ignored");
+    }
+    else if (k == "polygonoffsetfactor" || k == "polygonoffsetunits")
+    {
+        float f = 0.0f;
+        if (!parseFloat(value, f)) warnValue(key, value, "is not a number; ignored");
+        else if (k == "polygonoffsetfactor") t.setPolygonOffsetFactor(f);
+        else t.setPolygonOffsetUnits(f);
+    }
+    else if (k == "usedefaultshading")
+    {
+        bool flag = true;
+        if (parseBool(value, flag)) t.setUseDefaultShading(flag);
+        else warnValue(key, value, "is not on/off; ignored");
+    }
+    else return false;
+    return true;
+}
+
+} // namespace
+
+const std::vector<OptionDescription>& optionDescriptions()
+{
+    static const std::vector<OptionDescription> options = {
+        {"Mode=<shadowmap|silhouette|hybrid|volume>", "Shadow algorithm (overrides the mode named in the file name)"},
+        {"ShadowMapSize=<n>", "Width and height of each light's shadow map (MapSize=<n> also works)"},
+        {"DebugView=<none|mask>", "mask: show the shadow mask of DebugLight instead of the shaded scene"},
+        {"DebugLight=<n>", "The light (index among the lights found) that DebugView=mask shows"},
+        {"LightNum=<n>", "GL light number that casts shadows; -1 shadows every light"},
+        {"MaxShadowLights=<n>", "Most lights shadowed at once (1..8)"},
+        {"BaseTextureUnit=<n>", "First texture unit of the shadow textures"},
+        {"PolygonOffsetFactor=<f>", "Slope-scaled depth bias"},
+        {"PolygonOffsetUnits=<f>", "Constant depth bias"},
+        {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
+        {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
+    };
+    return options;
+}
+
+std::vector<std::pair<std::string, std::string>> splitOptions(const std::string& optionString)
+{
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::istringstream in(optionString);
+    std::string word;
+    while (in >> word)
+    {
+        const std::string::size_type eq = word.find('=');
+        if (eq == std::string::npos) pairs.emplace_back(word, std::string());
+        else pairs.emplace_back(word.substr(0, eq), word.substr(eq + 1));
+    }
+    return pairs;
+}
+
+std::string applyOptions(const std::string& optionString, SilhouetteShadowTechnique& technique)
+{
+    std::string report;
+    for (const auto& kv : splitOptions(optionString))
+    {
+        if (lower(kv.first) == "report") report = kv.second;
+        else if (!applyOne(kv.first, kv.second, technique))
+            OSG_INFO << "osgShadowSilhouette pseudo-loader: option " << kv.first << " is not ours" << std::endl;
+    }
+    return report;
+}
+
+} // namespace osssil
