@@ -649,10 +649,16 @@ std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::co
                                          " has a non-finite position or direction; it casts no shadow");
             continue;
         }
-        const bool seen = std::any_of(lights.begin(), lights.end(), [&](const FoundLight& l) {
+        if (light->getLightNum() >= shader::MAX_SCENE_LIGHTS) continue;
+        // Positional state is applied in this order, so of two lights with one number (say
+        // the viewer's headlight and the scene's light 0) the last is the one GL lights with.
+        auto same = std::find_if(lights.begin(), lights.end(), [&](const FoundLight& l) {
             return l.description.lightNum == found.description.lightNum;
         });
-        if (!seen && light->getLightNum() < shader::MAX_SCENE_LIGHTS) lights.push_back(found);
+        if (same != lights.end())
+            *same = found;
+        else
+            lights.push_back(found);
     }
     std::sort(lights.begin(), lights.end(), [](const FoundLight& a, const FoundLight& b) {
         return a.description.lightNum < b.description.lightNum;
