@@ -202,7 +202,7 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     if (region.empty() || !casters.valid() || !finite(towardLight) || towardLight.length2() == 0.0) return f;
     osg::Vec3d d = towardLight;
     d.normalize();
-    // A view fixed in world space (eye at the origin) keeps texel positions stable.
+    // Orientation only for now; the origin is moved by whole texels once the extent is known.
     f.view = osg::Matrixd::lookAt(osg::Vec3d(), -d, orthogonal(d));
 
     Range rx, ry, rDepth, cx, cy, cDepth;
@@ -224,13 +224,22 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     const double n = std::max(1u, mapSize);
     const double extent = std::max(x.hi - x.lo, y.hi - y.lo);
     const double texel = std::max(extent, 1e-12 * (1.0 + std::fabs(x.lo) + std::fabs(y.lo))) / std::max(1.0, n - 1.0);
-    x.lo = std::floor(x.lo / texel) * texel;
-    y.lo = std::floor(y.lo / texel) * texel;
+
+    // Move the light's origin next to the region, by whole texels: the texel grid stays where
+    // it is, and the depth pass's model-view matrix (single precision on the GPU) stays small
+    // for scenes far from the world's origin.
+    const osg::Vec3d origin(std::round(0.5 * (x.lo + x.hi) / texel) * texel,
+                            std::round(0.5 * (y.lo + y.hi) / texel) * texel,
+                            -0.5 * (cDepth.lo + rDepth.hi));
+    f.view = f.view * osg::Matrixd::translate(-origin);
+    x.lo -= origin.x(), x.hi -= origin.x(), y.lo -= origin.y(), y.hi -= origin.y();
+    x.lo = std::floor(x.lo / texel + 1e-9) * texel;
+    y.lo = std::floor(y.lo / texel + 1e-9) * texel;
     x.hi = x.lo + texel * n;
     y.hi = y.lo + texel * n;
 
-    const double zNear = cDepth.lo;
-    const double zFar = rDepth.hi;
+    const double zNear = cDepth.lo + origin.z();
+    const double zFar = rDepth.hi + origin.z();
     const double margin = 1e-3 * (zFar - zNear) + 1e-9 * (std::fabs(zNear) + std::fabs(zFar));
     f.projection = osg::Matrixd::ortho(x.lo, x.hi, y.lo, y.hi, zNear - margin, zFar + margin);
     f.perspective = false;
