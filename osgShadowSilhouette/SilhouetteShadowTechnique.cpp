@@ -503,15 +503,20 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
             break;
         }
         LightPass& pass = vd.passes[slot];
-        if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize))
+        // SILHOUETTE_MAP reads raw depths and compares them itself; the other modes sample
+        // with hardware comparison. A texture's comparison mode is fixed at creation: toggling
+        // it on a texture GL already has is not reliably re-applied, so switching rebuilds.
+        if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize) ||
+            pass.depthTexture->getShadowComparison() == silhouette)
+        {
             pass = createLightPass(slot);
+            pass.depthTexture->setShadowComparison(!silhouette);
+        }
         pass.frustum = fitLightFrustum(lights[i].description, region, casters);
         osg::Texture2D* texture = litTexture(silhouette);
         osg::Texture2D* silhouetteMap = _defaultSilhouetteTexture.get();
         if (pass.frustum.valid && mode != SHADOW_VOLUME)
         {
-            // SILHOUETTE_MAP reads raw depths and compares them itself.
-            if (pass.depthTexture->getShadowComparison() == silhouette) pass.depthTexture->setShadowComparison(!silhouette);
             cullDepthPass(cv, pass);
             texture = pass.depthTexture.get();
             ++stats.shadowPasses;

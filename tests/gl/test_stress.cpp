@@ -82,8 +82,14 @@ TEST(Stress, SwitchingModeEveryFrame)
         r.technique->setMode(SilhouetteShadowTechnique::Mode(frame % 4));
         r.renderer->timeFrames(0, 1);
     }
-    r.technique->setMode(SilhouetteShadowTechnique::SHADOW_VOLUME);
-    EXPECT_LT(wrongPct(r), 0.01);
+    // Each mode keeps its accuracy right after another one ran (shared depth maps change
+    // their comparison mode between SILHOUETTE_MAP and the others).
+    const double bounds[] = {0.15, 0.05, 0.01, 0.01}; // SHADOW_MAP, SILHOUETTE_MAP, HYBRID, SHADOW_VOLUME
+    for (int m : {1, 2, 0, 3, 1, 0})
+    {
+        r.technique->setMode(SilhouetteShadowTechnique::Mode(m));
+        EXPECT_LT(wrongPct(r), bounds[m]) << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m));
+    }
 }
 
 TEST(Stress, SceneWithoutLightRendersUnshadowed)
