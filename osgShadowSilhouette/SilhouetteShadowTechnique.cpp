@@ -463,35 +463,46 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                             " is not available in this version; rendering SHADOW_MAP");
 
     ViewData& vd = *getViewData(cv);
-    const Mode mode = effectiveModeFor(cv);
-    const bool stencilMode = mode == SHADOW_VOLUME || mode == HYBRID;
+    FrameContext frame;
+    frame.mode = effectiveModeFor(cv);
+    const bool stencilMode = frame.mode == SHADOW_VOLUME || frame.mode == HYBRID;
     if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
     cullReceivers(cv, vd, stencilMode ? vd.stencil->getBaseStateSet() : nullptr);
 
     const std::vector<FoundLight> lights = collectLights(cv);
-    std::vector<int> slots(lights.size(), -1);
+    const std::vector<int> slots = assignShadowSlots(lights);
     Statistics stats;
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
-    stats.effectiveMode = mode;
+    stats.effectiveMode = frame.mode;
+    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
+    else prepareFrame(cv, frame);
+    stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
-    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
-    osg::BoundingBoxd receivers, casters;
-    if (!lights.empty())
+    const bool silhouette = frame.mode == SILHOUETTE_MAP;
+    std::vector<osg::Texture2D*> silhouetteMaps(_maxShadowLights, _defaultSilhouetteTexture.get());
+    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
+                                                         osg::StateAttribute::ON);
+    for (std::size_t i = 0; i < lights.size(); ++i)
     {
-        receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
-        casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
+        if (slots[i] < 0) continue;
+        ++stats.lightsShadowed;
+        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), silhouetteMaps[slots[i]],
+                  stats);
     }
-    const std::vector<osg::Vec3d> region = visibleReceiverRegion(cv, receivers);
+    bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
 
-    const bool silhouette = stats.effectiveMode == SILHOUETTE_MAP;
-    std::vector<Caster> casterList;
-    if ((silhouette || stencilMode) && !lights.empty())
-        casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
-                                 *_meshCache);
-    stats.silhouetteCasters = static_cast<unsigned int>(casterList.size());
-    std::vector<osg::Texture2D*> silhouetteMaps;
+    if (stencilMode)
+        cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
+    updateViewUniforms(cv, vd, lights, slots);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
+    _statistics = stats;
+}
 
+std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<FoundLight>& lights) const
+{
+    std::vector<int> slots(lights.size(), -1);
     unsigned int slot = 0;
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
@@ -502,49 +513,53 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                            std::to_string(_maxShadowLights) + "); the rest are lit unshadowed");
             break;
         }
-        LightPass& pass = vd.passes[slot];
-        // SILHOUETTE_MAP reads raw depths and compares them itself; the other modes sample
-        // with hardware comparison. A texture's comparison mode is fixed at creation: toggling
-        // it on a texture GL already has is not reliably re-applied, so switching rebuilds.
-        if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize) ||
-            pass.depthTexture->getShadowComparison() == silhouette)
-        {
-            pass = createLightPass(slot);
-            pass.depthTexture->setShadowComparison(!silhouette);
-        }
-        pass.frustum = fitLightFrustum(lights[i].description, region, casters);
-        osg::Texture2D* texture = litTexture(silhouette);
-        osg::Texture2D* silhouetteMap = _defaultSilhouetteTexture.get();
-        if (pass.frustum.valid && mode != SHADOW_VOLUME)
-        {
-            cullDepthPass(cv, pass);
-            texture = pass.depthTexture.get();
-            ++stats.shadowPasses;
-            if (silhouette)
-            {
-                cullSilhouettePass(cv, pass, lights[i].description, casterList);
-                silhouetteMap = pass.silhouettePass->getTexture();
-                stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
-                stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
-            }
-        }
-        else
-            ++stats.lightsSkipped;
-        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, texture, osg::StateAttribute::ON);
-        silhouetteMaps.push_back(silhouetteMap);
         slots[i] = static_cast<int>(slot++);
     }
-    for (; slot < _maxShadowLights; ++slot)
-        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                         osg::StateAttribute::ON);
-    bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
-    stats.lightsShadowed = static_cast<unsigned int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
-    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
+    return slots;
+}
 
-    if (stencilMode) cullStencilPasses(cv, vd, mode == HYBRID, lights, slots, casterList, receivers, stats);
-    updateViewUniforms(cv, vd, lights, slots);
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
-    _statistics = stats;
+void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
+{
+    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
+    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
+    frame.casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
+    frame.region = visibleReceiverRegion(cv, frame.receivers);
+    if (frame.mode != SHADOW_MAP)
+        frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
+                                          *_meshCache);
+}
+
+void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
+                                          const LightDescription& light, unsigned int slot,
+                                          osg::Texture2D*& silhouetteMap, Statistics& stats)
+{
+    const bool silhouette = frame.mode == SILHOUETTE_MAP;
+    LightPass& pass = vd.passes[slot];
+    // SILHOUETTE_MAP reads raw depths and compares them itself; the other modes sample with
+    // hardware comparison. A texture's comparison mode is fixed at creation: toggling it on a
+    // texture GL already has is not reliably re-applied, so switching rebuilds.
+    if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize) ||
+        pass.depthTexture->getShadowComparison() == silhouette)
+    {
+        pass = createLightPass(slot);
+        pass.depthTexture->setShadowComparison(!silhouette);
+    }
+    pass.frustum = fitLightFrustum(light, frame.region, frame.casters);
+    if (!pass.frustum.valid)
+    {
+        ++stats.lightsSkipped; // nothing can shadow what this view sees
+        return;
+    }
+    if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
+    cullDepthPass(cv, pass);
+    ++stats.shadowPasses;
+    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
+                                                     osg::StateAttribute::ON);
+    if (!silhouette) return;
+    cullSilhouettePass(cv, pass, light, frame.casterList);
+    silhouetteMap = pass.silhouettePass->getTexture();
+    stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+    stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
