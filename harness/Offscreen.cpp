@@ -81,9 +81,9 @@ struct Renderer::DrawHooks : public osg::Referenced
     osg::ref_ptr<osg::Image> capture;
 };
 
-Renderer::Renderer(int width, int height, bool offscreen) : _width(width), _height(height)
+Renderer::Renderer(int width, int height, bool offscreen, int stencilBits) : _width(width), _height(height)
 {
-    osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
+    if (stencilBits > 0) osg::DisplaySettings::instance()->setMinimumNumStencilBits(stencilBits);
     _viewer = new osgViewer::Viewer;
     _viewer->setThreadingModel(osgViewer::Viewer::SingleThreaded);
     _viewer->setLightingMode(osg::View::NO_LIGHT);
@@ -96,7 +96,7 @@ Renderer::Renderer(int width, int height, bool offscreen) : _width(width), _heig
     traits->windowDecoration = !offscreen;
     traits->doubleBuffer = true;
     traits->pbuffer = offscreen;
-    traits->stencil = 8;
+    traits->stencil = stencilBits;
     traits->depth = 24;
     traits->alpha = 8;
     traits->sharedContext = nullptr;

@@ -22,9 +22,9 @@ struct FrameTiming
 class Renderer
 {
 public:
-    /** A viewer of width x height with 8 stencil bits, single threaded, no headlight.
-     *  offscreen: a pbuffer (else a window). */
-    Renderer(int width, int height, bool offscreen);
+    /** A viewer of width x height with stencilBits stencil bits (default 8), single
+     *  threaded, no headlight. offscreen: a pbuffer (else a window). */
+    Renderer(int width, int height, bool offscreen, int stencilBits = 8);
     ~Renderer();
 
     /** Whether a graphics context could be created. */

@@ -120,3 +120,33 @@ TEST(Stress, EmptySceneRendersBackground)
         EXPECT_EQ(m.count(ossref::MASK_BACKGROUND), 1024LL * 768) << mode;
     }
 }
+
+// The stencil modes need a stencil buffer: on a context without one they render SHADOW_MAP
+// (and warn once) instead of silently drawing no shadows.
+TEST(Stress, StencilModesWithoutStencilBufferFallBackToShadowMap)
+{
+    osshar::RenderOptions options;
+    osshar::PreparedScene scene;
+    osg::ref_ptr<osg::Node> root;
+    osg::ref_ptr<SilhouetteShadowTechnique> technique;
+    std::string error;
+    ASSERT_TRUE(osshar::prepareScene(options, scene, error)) << error;
+    ASSERT_TRUE(osshar::makeShadowedRoot("volume", 1024, scene, root, technique, error)) << error;
+    osshar::Renderer renderer(1024, 768, true, 0);
+    ASSERT_TRUE(renderer.valid());
+    const osg::GraphicsContext* gc = renderer.viewer().getCamera()->getGraphicsContext();
+    if (gc->getTraits()->stencil > 0) GTEST_SKIP() << "the display granted a stencil buffer anyway";
+    renderer.setSceneData(root.get());
+    renderer.setView(scene.view);
+    renderer.timeFrames(0, 2);
+    const SilhouetteShadowTechnique::Statistics s = technique->getStatistics();
+    EXPECT_EQ(s.effectiveMode, SilhouetteShadowTechnique::SHADOW_MAP);
+    EXPECT_EQ(s.shadowPasses, 1u) << "the fallback renders the shadow map";
+    technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
+    osg::ref_ptr<osg::Image> image = renderer.renderAndCapture(osg::Vec4(128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1));
+    const ossref::Comparison c = ossref::compareMasks(
+        ossref::maskFromImage(*image),
+        ossref::computeReferenceMask(*scene.content, osshar::referenceCamera(scene.view, 1024, 768),
+                                     osshar::referenceLight(scene.lights.at(0))));
+    EXPECT_LT(c.wrongPct, 0.15);
+}
