@@ -68,6 +68,17 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     a.read("--compare", o.compare);
     a.read("--reference", o.reference);
     a.read("--diff", o.diff);
+    a.read("--classes", o.classes);
+    std::string culling;
+    if (a.read("--blocker-culling", culling))
+    {
+        if (culling != "on" && culling != "off")
+        {
+            error = "--blocker-culling takes on or off";
+            return false;
+        }
+        o.blockerCulling = culling == "on";
+    }
     if (a.read("--offscreen")) o.offscreen = true;
     for (int i = 1; i < a.argc(); ++i)
     {
@@ -88,7 +99,8 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"
       << "    [--light-dir X Y Z | --light-pos X Y Z]... [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask.png] [--offscreen]\n"
-      << "    [--reference ref.png] [--compare ref.png] [--diff diff.png]\n";
+      << "    [--reference ref.png] [--compare ref.png] [--diff diff.png] [--classes classes.png]\n"
+      << "    [--blocker-culling on|off]\n";
     return s.str();
 }
 

@@ -36,6 +36,8 @@ struct RenderOptions
     std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
+    bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
+    std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };
 

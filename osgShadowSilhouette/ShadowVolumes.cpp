@@ -46,6 +46,7 @@ osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawEl
     osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
     g->setUseDisplayList(false);
     g->setUseVertexBufferObjects(true);
+    g->setDataVariance(osg::Object::DYNAMIC); // its draw callback changes between frames
     g->setVertexArray(vertices);
     g->addPrimitiveSet(indices);
     g->setComputeBoundingBoxCallback(new CasterBoundCallback(box));
@@ -187,14 +188,24 @@ unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const
 }
 
 void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, double nearRadius,
-                             const osg::BoundingBoxd& receivers)
+                             const osg::BoundingBoxd& receivers, BlockerQueries* blockers)
 {
     _zfail = _zpass = 0;
     _scissorCoverage = 0.0;
     const osg::Viewport* viewport = cv.getViewport();
     const osg::Matrixd worldToClip = *cv.getModelViewMatrix() * *cv.getProjectionMatrix();
-    for (Entry& e : _entries)
+    const bool conditional = blockers && blockers->size() == _entries.size();
+    for (unsigned int i = 0; i < _entries.size(); ++i)
     {
+        Entry& e = _entries[i];
+        BlockerQueries* owner = conditional ? blockers : nullptr;
+        if (e.conditionalOwner != owner)
+        {
+            e.conditionalOwner = owner;
+            e.conditional = owner ? owner->createConditionalDraw(i) : nullptr;
+        }
+        if (e.zfail->getDrawCallback() != e.conditional.get()) e.zfail->setDrawCallback(e.conditional.get());
+        if (e.zpass->getDrawCallback() != e.conditional.get()) e.zpass->setDrawCallback(e.conditional.get());
         const bool zfail = needsZFail(e.worldBound, _light, eye, nearRadius);
         e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
         ++(zfail ? _zfail : _zpass);
@@ -319,7 +330,34 @@ namespace {
 constexpr unsigned int MASK_BIT = 0x80;   // HYBRID: silhouette pixel
 constexpr unsigned int COUNT_BITS = 0x7f; // HYBRID: the volumes' count
 constexpr int OUTER_BIN = 5;              // after the opaque bin (0), before transparent (10)
-constexpr int BINS_PER_LIGHT = 8;
+constexpr int BINS_PER_LIGHT = 10;
+// Bins of one light, from 1 + BINS_PER_LIGHT * slot on.
+enum LightBin
+{
+    BIN_CLEAR = 0,
+    BIN_MASK_BEGIN,
+    BIN_MASK,
+    BIN_MASK_END,
+    BIN_VOLUME_BEGIN,
+    BIN_VOLUMES,
+    BIN_VOLUME_END,
+    BIN_LIT,
+    BIN_LIT_SHADOW_MAP
+};
+
+#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
+#endif
+
+/** A node holding one drawable (a counter's begin or end) in render bin `bin`. */
+osg::ref_ptr<osg::Group> counterNode(osg::ref_ptr<osg::Drawable> drawable, int bin)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(drawable.get());
+    geode->setCullingActive(false);
+    geode->getOrCreateStateSet()->setRenderBinDetails(bin, "RenderBin");
+    return geode;
+}
 
 osg::ref_ptr<osg::StateSet> passState(int bin, osg::Program* program)
 {
@@ -387,23 +425,29 @@ void StencilShadowPasses::build(Slot& s) const
     const int bin = 1 + BINS_PER_LIGHT * static_cast<int>(s.slot);
     const std::string slot = std::to_string(s.slot), light = std::to_string(s.lightNum);
     s.clear = createStencilClear();
-    s.clearState = passState(bin, nullptr);
+    s.clearState = passState(bin + BIN_CLEAR, nullptr);
     s.volumeState = createVolumeStateSet(_volume.get());
-    s.volumeState->setRenderBinDetails(bin + 2, "RenderBin");
+    s.volumeState->setRenderBinDetails(bin + BIN_VOLUMES, "RenderBin");
     s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
+    s.volumeCounter = new GpuCounter(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    s.volumeBegin = counterNode(s.volumeCounter->createBegin(), bin + BIN_VOLUME_BEGIN);
+    s.volumeEnd = counterNode(s.volumeCounter->createEnd(), bin + BIN_VOLUME_END);
 
-    s.litState = passState(bin + 3, _lighting.get());
+    s.litState = passState(bin + BIN_LIT, _lighting.get());
     s.litState->setDefine("OSS_LIGHT_PASS", slot);
     s.litState->setDefine("OSS_LIGHT_NUM", light);
     // Count 0 is lit; HYBRID: only at silhouette pixels (mask bit set, count 0).
     addLightState(*s.litState, s.hybrid ? MASK_BIT : 0u, s.hybrid ? 0xffu : 0xffu, !s.mask);
     if (!s.hybrid) return;
 
-    s.maskState = passState(bin + 1, _lighting.get());
+    s.maskCounter = new GpuCounter(GL_SAMPLES_PASSED);
+    s.maskBegin = counterNode(s.maskCounter->createBegin(), bin + BIN_MASK_BEGIN);
+    s.maskEnd = counterNode(s.maskCounter->createEnd(), bin + BIN_MASK_END);
+    s.maskState = passState(bin + BIN_MASK, _lighting.get());
     s.maskState->setDefine("OSS_HYBRID_MASK", slot);
     s.maskState->setDefine("OSS_LIGHT_NUM", light);
     addMaskState(*s.maskState);
-    s.litShadowMapState = passState(bin + 4, _lighting.get());
+    s.litShadowMapState = passState(bin + BIN_LIT_SHADOW_MAP, _lighting.get());
     s.litShadowMapState->setDefine("OSS_LIGHT_PASS", slot);
     s.litShadowMapState->setDefine("OSS_LIGHT_NUM", light);
     s.litShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
@@ -430,6 +474,11 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
                                const osg::BoundingBoxd& receivers, const CullReceivers& cullReceivers)
 {
     _zfail = _zpass = _rebuilt = 0;
+    _silhouettePixels = _volumeFragments = -1;
+    _blockersHidden = _blockersTested = 0;
+    const auto add = [](long long& sum, long long value) {
+        if (value >= 0) sum = std::max(sum, 0LL) + value;
+    };
     const osg::Vec3d eye = osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans();
     const double nearRadius = nearPlaneRadius(cv);
     cv.pushStateSet(_outer.get());
@@ -442,11 +491,25 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         s.clear->accept(cv);
         cv.popStateSet();
 
-        if (s.hybrid) cullReceivers(s.maskState.get());
+        if (s.hybrid)
+        {
+            s.maskBegin->accept(cv);
+            cullReceivers(s.maskState.get());
+            s.maskEnd->accept(cv);
+            add(_silhouettePixels, s.maskCounter->getLastValue());
+        }
         _rebuilt += s.volumes->update(casters, light.position);
+        s.volumeBegin->accept(cv);
         cv.pushStateSet(s.volumeState.get());
-        s.volumes->cull(cv, eye, nearRadius, receivers);
+        s.volumes->cull(cv, eye, nearRadius, receivers, light.blockers.get());
         cv.popStateSet();
+        s.volumeEnd->accept(cv);
+        add(_volumeFragments, s.volumeCounter->getLastValue());
+        if (light.blockers)
+        {
+            _blockersHidden += light.blockers->getHidden();
+            _blockersTested += light.blockers->getTested();
+        }
         _zfail += s.volumes->getZFailCount();
         _zpass += s.volumes->getZPassCount();
 

@@ -38,9 +38,10 @@ class TraverseShadowedSceneCallback : public osg::NodeCallback
 {
 public:
     explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
-    void operator()(osg::Node*, osg::NodeVisitor* nv) override
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
         if (_scene) _scene->osg::Group::traverse(*nv);
+        traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
 
 private:
@@ -130,7 +131,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _baseTextureUnit(copy._baseTextureUnit),
       _useDefaultShading(copy._useDefaultShading),
       _debugView(copy._debugView),
-      _debugLight(copy._debugLight)
+      _debugLight(copy._debugLight),
+      _blockerCulling(copy._blockerCulling)
 {
 }
 
@@ -238,7 +240,7 @@ void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
 
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
 {
-    _debugView = (view >= DEBUG_NONE && view <= DEBUG_SILHOUETTE_MAP) ? view : DEBUG_NONE;
+    _debugView = (view >= DEBUG_NONE && view <= DEBUG_CLASSES) ? view : DEBUG_NONE;
 }
 
 void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
@@ -246,10 +248,31 @@ void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
     _debugLight = std::min<unsigned int>(index, shader::MAX_SCENE_LIGHTS - 1);
 }
 
+void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
+{
+    _blockerCulling = flag;
+}
+
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
     return _statistics;
+}
+
+void SilhouetteShadowTechnique::recordStatistics(const Statistics& stats)
+{
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
+        _statistics = stats;
+    }
+    osg::ref_ptr<osg::Stats> target;
+    if (!_stats.lock(target)) return;
+    const unsigned int frame = stats.frameNumber;
+    if (stats.silhouettePixelPercent() >= 0.0)
+        target->setAttribute(frame, STATS_SILHOUETTE_PIXEL_PERCENT, stats.silhouettePixelPercent());
+    if (stats.volumeOverdraw() >= 0.0) target->setAttribute(frame, STATS_VOLUME_OVERDRAW, stats.volumeOverdraw());
+    target->setAttribute(frame, STATS_BLOCKERS_SKIPPED, stats.blockersSkipped);
+    target->setAttribute(frame, STATS_SILHOUETTE_EDGES, stats.silhouetteEdges);
 }
 
 void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
@@ -371,6 +394,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
             if (pass.depthCamera) pass.depthCamera->releaseGLObjects(state);
             if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
             if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
+            if (pass.blockers) pass.blockers->releaseGLObjects(state);
         }
     }
 }
@@ -496,8 +520,9 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     if (stencilMode)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
     updateViewUniforms(cv, vd, lights, slots);
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
-    _statistics = stats;
+    if (const osg::Viewport* viewport = cv.getViewport())
+        stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
+    recordStatistics(stats);
 }
 
 std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<FoundLight>& lights) const
@@ -551,6 +576,15 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
         return;
     }
     if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
+    const bool blockers = frame.mode == HYBRID && _blockerCulling;
+    if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
+    if (blockers) pass.blockers->update(frame.casterList);
+    osg::Node* queries = blockers ? pass.blockers->getNode() : nullptr;
+    if (pass.depthCamera->getNumChildren() != (queries ? 1u : 0u) || (queries && pass.depthCamera->getChild(0) != queries))
+    {
+        pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
+        if (queries) pass.depthCamera->addChild(queries);
+    }
     cullDepthPass(cv, pass);
     ++stats.shadowPasses;
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
@@ -596,20 +630,27 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
                                                   const osg::BoundingBoxd& receivers, Statistics& stats)
 {
     std::vector<StencilLight> stencilLights;
+    const bool oneLight = _debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES; // only its passes
     int maskSlot = -1;
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (slots[i] < 0 || !vd.passes[slots[i]].frustum.valid) continue;
+        const LightPass& pass = vd.passes[slots[i]];
         stencilLights.push_back({static_cast<unsigned int>(slots[i]), lights[i].description.lightNum,
-                                 lights[i].description.homogeneous()});
-        if (_debugView == DEBUG_SHADOW_MASK && i == _debugLight) maskSlot = slots[i];
+                                 lights[i].description.homogeneous(),
+                                 hybrid && _blockerCulling ? pass.blockers : nullptr});
+        if (oneLight && i == _debugLight) maskSlot = slots[i];
     }
-    if (_debugView == DEBUG_SHADOW_MASK && maskSlot < 0) stencilLights.clear(); // the mask light casts nothing
-    vd.stencil->cull(cv, hybrid, _debugView == DEBUG_SHADOW_MASK ? maskSlot : -1, stencilLights, casters, receivers,
+    if (oneLight && maskSlot < 0) stencilLights.clear(); // the debug light casts nothing
+    vd.stencil->cull(cv, hybrid, oneLight ? maskSlot : -1, stencilLights, casters, receivers,
                      [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
     stats.zfailCasters = vd.stencil->getZFailCasters();
     stats.zpassCasters = vd.stencil->getZPassCasters();
     stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
+    stats.silhouettePixels = hybrid ? vd.stencil->getSilhouettePixels() : -1;
+    stats.volumeFragments = vd.stencil->getVolumeFragments();
+    stats.blockersTested = vd.stencil->getBlockersTested();
+    stats.blockersSkipped = vd.stencil->getBlockersHidden();
 }
 
 void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
@@ -617,6 +658,7 @@ void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
     const bool silhouette = getEffectiveMode() == SILHOUETTE_MAP;
     const std::pair<const char*, bool> defines[] = {
         {shader::DEFINE_DEBUG_MASK, _debugView == DEBUG_SHADOW_MASK},
+        {shader::DEFINE_DEBUG_CLASSES, _debugView == DEBUG_CLASSES},
         {shader::DEFINE_SILHOUETTE_MAP, silhouette},
         {shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, silhouette && _debugView == DEBUG_SILHOUETTE_PIXELS},
         {shader::DEFINE_DEBUG_SILHOUETTE_MAP, silhouette && _debugView == DEBUG_SILHOUETTE_MAP},

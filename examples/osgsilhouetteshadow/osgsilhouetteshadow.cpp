@@ -11,6 +11,7 @@
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
  * MEASURE.md (harness/Peers.h); its mask (first light only) is classified from its image. */
 
+#include "Classes.h"
 #include "Offscreen.h"
 #include "Peers.h"
 #include "RenderOptions.h"
@@ -97,8 +98,10 @@ int main(int argc, char** argv)
         std::cerr << "osgsilhouetteshadow: " << error << "\n" << osshar::renderOptionsUsage(arguments.getApplicationName());
         return 1;
     }
+    if (technique) technique->setBlockerCulling(options.blockerCulling);
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
-    const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty();
+    const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||
+                       !options.classes.empty();
     if (!batch) return runWindowed(scene, root.get());
 
     osshar::Renderer renderer(options.width, options.height, options.offscreen);
@@ -110,17 +113,35 @@ int main(int argc, char** argv)
     renderer.setSceneData(root.get());
     renderer.setView(scene.view);
     const osshar::FrameTiming timing = renderer.timeFrames(options.warmup, options.frames);
+    int status = 0;
     std::printf("frame_ms_median=%.3f\n", timing.cpuMsMedian);
     if (timing.gpuMsMedian >= 0.0) std::printf("gpu_ms_median=%.3f\n", timing.gpuMsMedian);
     if (technique)
     {
         const SilhouetteShadowTechnique::Statistics s = technique->getStatistics();
         std::printf("lights_found=%u lights_shadowed=%u shadow_passes=%u silhouette_edges=%u zfail_casters=%u "
-                    "zpass_casters=%u volumes_rebuilt=%u\n",
+                    "zpass_casters=%u volumes_rebuilt=%u extractions_skipped=%u\n",
                     s.lightsFound, s.lightsShadowed, s.shadowPasses, s.silhouetteEdges, s.zfailCasters, s.zpassCasters,
-                    s.volumesRebuilt);
+                    s.volumesRebuilt, s.extractionsSkipped);
+        std::printf("viewport_pixels=%u silhouette_pixels=%lld volume_fragments=%lld volume_overdraw=%.3f "
+                    "blockers_tested=%u blockers_skipped=%u\n",
+                    s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
+                    s.blockersSkipped);
     }
 
+    if (!options.classes.empty() && technique)
+    {
+        // DEBUG_CLASSES of each light: the pixels each mode treats as silhouette pixels.
+        for (unsigned int i = 0; i < scene.lights.size(); ++i)
+        {
+            osg::ref_ptr<osg::Image> image = osshar::renderClasses(renderer, *technique, i);
+            const osshar::ClassCounts c = osshar::countClasses(*image);
+            std::printf("light=%u silhouette_pixel_pct=%.4f silhouette_pixels=%lld geometry_pixels=%lld\n", i,
+                        c.silhouettePercent(), c.silhouette(), c.geometry);
+            if (!osgDB::writeImageFile(*image, perLightName(options.classes, i)))
+                std::cerr << "cannot write " << perLightName(options.classes, i) << "\n", status = 1;
+        }
+    }
     if (!options.out.empty())
     {
         osg::ref_ptr<osg::Image> color = renderer.renderAndCapture();
@@ -129,7 +150,6 @@ int main(int argc, char** argv)
     const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
     const bool peer = osshar::isPeerMode(options.mode);
     const unsigned int maskLights = peer ? std::min<unsigned int>(1, scene.lights.size()) : scene.lights.size();
-    int status = 0;
     for (unsigned int i = 0; i < maskLights; ++i)
     {
         ossref::Mask mask, reference;

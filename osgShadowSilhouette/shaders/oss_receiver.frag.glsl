@@ -5,9 +5,10 @@
 // and specular), modulated by the texture on unit 0 where there is one.
 // With OSS_DEBUG_MASK the pass writes the shadow mask of light oss_maskLight instead:
 // 1 where that light reaches the surface, 0 where it is blocked or the surface's geometric
-// normal faces away from it (the conventions of the exact reference).
+// normal faces away from it (the conventions of the exact reference). With OSS_DEBUG_CLASSES
+// it writes the class colours of that light (oss_classColor()).
 
-#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
+#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
 #pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
@@ -51,21 +52,24 @@ vec4 oss_silhouetteDebug(vec4 eyePosition);
 #endif
 #define OSS_ADD_SLOT(s) color += OSS_SLOT_TERM(s) * oss_shadowedColor[s]
 
-#ifdef OSS_DEBUG_MASK
+#if defined(OSS_DEBUG_MASK) || defined(OSS_DEBUG_CLASSES)
+bool oss_facesLight(int n, vec3 p);
+int oss_shadowSlotOf(int light);
+vec2 oss_shadowSlotClass(int slot, vec4 eyePosition);
+vec4 oss_classColor(bool silhouette, bool lit);
+
 void main()
 {
-    vec3 p = oss_eyePosition.xyz;
-    vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
-    if (dot(ng, -p) < 0.0)
-        ng = -ng; // the geometric normal, facing the camera
     int n = oss_lightIndex[clamp(oss_maskLight, 0, OSS_MAX_SCENE_LIGHTS - 1)];
-    vec4 lp = gl_LightSource[n].position;
-    vec3 L = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);
-    bool inCone = lp.w == 0.0 || gl_LightSource[n].spotCutoff > 90.0 ||
-                  dot(-L, normalize(gl_LightSource[n].spotDirection)) >= gl_LightSource[n].spotCosCutoff;
-    bool facing = dot(ng, L) > 0.0 && inCone && oss_maskLight < oss_numLights;
+    bool facing = oss_facesLight(n, oss_eyePosition.xyz) && oss_maskLight < oss_numLights;
+#ifdef OSS_DEBUG_CLASSES
+    int slot = oss_shadowSlotOf(n);
+    vec2 c = slot < 0 ? vec2(1.0, 0.0) : oss_shadowSlotClass(slot, oss_eyePosition);
+    gl_FragColor = oss_classColor(c.y > 0.5, facing && c.x >= 0.5);
+#else
     float lit = facing ? step(0.5, oss_shadowTerm(n, oss_eyePosition)) : 0.0;
     gl_FragColor = vec4(vec3(lit), 1.0);
+#endif
 }
 #else
 void main()

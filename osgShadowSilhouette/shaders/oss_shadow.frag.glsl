@@ -67,3 +67,49 @@ float oss_shadowTerm(int light, vec4 eyePosition)
     int slot = oss_shadowSlotOf(light);
     return slot < 0 ? 1.0 : oss_shadowSlotTerm(slot, eyePosition);
 }
+
+// Whether the surface at eye-space point p faces GL light n (geometric normal, from the
+// screen-space derivatives of p) and lies inside its spot cone: the "facing" of the exact
+// reference. Call it where derivatives are defined (uniform control flow).
+bool oss_facesLight(int n, vec3 p)
+{
+    vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
+    if (dot(ng, -p) < 0.0)
+        ng = -ng; // toward the camera
+    vec4 lp = gl_LightSource[n].position;
+    vec3 L = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);
+    bool inCone = lp.w == 0.0 || gl_LightSource[n].spotCutoff > 90.0 ||
+                  dot(-L, normalize(gl_LightSource[n].spotDirection)) >= gl_LightSource[n].spotCosCutoff;
+    return dot(ng, L) > 0.0 && inCone;
+}
+
+// DebugView DEBUG_CLASSES (Chan and Durand 2004, figure colours): red / blue where the
+// shadow map answers lit / shadowed, green / black at silhouette pixels by the exact answer
+// (silhouette reconstruction or shadow volumes).
+vec4 oss_classColor(bool silhouette, bool lit)
+{
+    return silhouette ? (lit ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(0.0, 0.0, 0.0, 1.0))
+                      : (lit ? vec4(1.0, 0.0, 0.0, 1.0) : vec4(0.0, 0.0, 1.0, 1.0));
+}
+
+#ifdef OSS_SILHOUETTE_MAP
+vec2 oss_silhouetteClass(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+#endif
+
+// The class of slot `slot` at an eye-space position: x the shadow term (1 lit), y 1 where the
+// mode treats the pixel as a silhouette pixel. SHADOW_MAP marks the pixels whose 2x2 PCF
+// lies strictly between 0 and 1 (those HYBRID would resolve with volumes).
+vec2 oss_shadowSlotClass(int slot, vec4 eyePosition)
+{
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+        if (s == slot)
+        {
+#ifdef OSS_SILHOUETTE_MAP
+            return oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+#else
+            float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+            return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+#endif
+        }
+    return vec2(1.0, 0.0);
+}

@@ -167,6 +167,18 @@ float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeTo
     return lit;
 }
 
+// DebugView DEBUG_CLASSES: x the term of oss_silhouetteTerm(), y 1 where it reconstructed.
+vec2 oss_silhouetteClass(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    oss_SilhouetteSample s;
+    if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
+        return vec2(1.0, 0.0);
+    if (!oss_isSilhouettePixel(s))
+        return vec2(s.lit.x, 0.0);
+    s.lit = oss_planeBiasedTests(vec2(textureSize(depthMap, 0)), s);
+    return oss_isSilhouettePixel(s) ? vec2(oss_silhouetteReconstruct(silhouetteMap, s), 1.0) : vec2(s.lit.x, 0.0);
+}
+
 // Debug view: the silhouette map projected onto the scene. Silhouette texels that hold an
 // edge point are tinted yellow and their point drawn as a red dot; where a texel covers
 // several pixels the dual grid is drawn too.

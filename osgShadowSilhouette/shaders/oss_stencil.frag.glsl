@@ -12,9 +12,11 @@
 //                          (Chan and Durand 2004): front-facing to the light and 2x2 PCF
 //                          strictly between 0 and 1; every other fragment is discarded
 // With OSS_DEBUG_MASK the passes write the MEASURE.md mask of the light instead: the base
-// pass 0, the light pass 1 where the surface faces the light.
+// pass 0, the light pass 1 where the surface faces the light. With OSS_DEBUG_CLASSES they
+// write the class colours (oss_classColor()): black base, green where the volumes leave the
+// light, red / blue where HYBRID's shadow map answers lit / shadowed.
 
-#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
+#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -33,19 +35,8 @@ uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 
-// Whether the surface's geometric normal faces GL light n and the point is inside its cone.
-bool oss_facesLight(int n)
-{
-    vec3 p = oss_eyePosition.xyz;
-    vec3 ng = normalize(cross(dFdx(p), dFdy(p)));
-    if (dot(ng, -p) < 0.0)
-        ng = -ng;
-    vec4 lp = gl_LightSource[n].position;
-    vec3 L = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);
-    bool inCone = lp.w == 0.0 || gl_LightSource[n].spotCutoff > 90.0 ||
-                  dot(-L, normalize(gl_LightSource[n].spotDirection)) >= gl_LightSource[n].spotCosCutoff;
-    return dot(ng, L) > 0.0 && inCone;
-}
+bool oss_facesLight(int n, vec3 p);
+vec4 oss_classColor(bool silhouette, bool lit);
 
 vec4 oss_textured(vec4 color)
 {
@@ -59,7 +50,7 @@ void main()
 {
 #if defined(OSS_HYBRID_MASK)
     float pcf = oss_pcf(oss_shadowMap[OSS_HYBRID_MASK], oss_eyeToShadow[OSS_HYBRID_MASK], oss_eyePosition);
-    if (!(pcf > 0.0 && pcf < 1.0) || !oss_facesLight(OSS_LIGHT_NUM))
+    if (!(pcf > 0.0 && pcf < 1.0) || !oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz))
         discard;
     gl_FragColor = vec4(0.0);
 #elif defined(OSS_LIGHT_PASS)
@@ -67,14 +58,18 @@ void main()
 #ifdef OSS_HYBRID_SHADOW_MAP
     visible = step(0.5, oss_pcf(oss_shadowMap[OSS_LIGHT_PASS], oss_eyeToShadow[OSS_LIGHT_PASS], oss_eyePosition));
 #endif
-#ifdef OSS_DEBUG_MASK
-    gl_FragColor = vec4(vec3(oss_facesLight(OSS_LIGHT_NUM) ? visible : 0.0), 1.0);
+#if defined(OSS_DEBUG_CLASSES) && defined(OSS_HYBRID_SHADOW_MAP)
+    gl_FragColor = oss_classColor(false, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) && visible > 0.5);
+#elif defined(OSS_DEBUG_CLASSES)
+    gl_FragColor = oss_classColor(true, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz));
+#elif defined(OSS_DEBUG_MASK)
+    gl_FragColor = vec4(vec3(oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) ? visible : 0.0), 1.0);
 #else
     gl_FragColor = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0));
 #endif
 #else
-#ifdef OSS_DEBUG_MASK
-    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+#if defined(OSS_DEBUG_MASK) || defined(OSS_DEBUG_CLASSES)
+    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0); // shadowed until a light pass says otherwise
 #else
     gl_FragColor = oss_textured(oss_unshadowedColor);
 #endif

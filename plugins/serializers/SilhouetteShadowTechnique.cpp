@@ -40,7 +40,9 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
         ADD_ENUM_VALUE(DEBUG_SHADOW_MASK);
         ADD_ENUM_VALUE(DEBUG_SILHOUETTE_PIXELS);
         ADD_ENUM_VALUE(DEBUG_SILHOUETTE_MAP);
+        ADD_ENUM_VALUE(DEBUG_CLASSES);
     END_ENUM_SERIALIZER();
 
     OSS_ADD_PROPERTY(unsigned int, DebugLight, 0u);
+    OSS_ADD_PROPERTY(bool, BlockerCulling, true);
 }

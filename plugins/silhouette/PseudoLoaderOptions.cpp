@@ -56,6 +56,9 @@ bool parseDebugView(const std::string& text, SilhouetteShadowTechnique::DebugVie
     const std::string t = lower(text);
     if (t == "none" || t == "debug_none") view = SilhouetteShadowTechnique::DEBUG_NONE;
     else if (t == "mask" || t == "debug_shadow_mask") view = SilhouetteShadowTechnique::DEBUG_SHADOW_MASK;
+    else if (t == "pixels" || t == "debug_silhouette_pixels") view = SilhouetteShadowTechnique::DEBUG_SILHOUETTE_PIXELS;
+    else if (t == "silmap" || t == "debug_silhouette_map") view = SilhouetteShadowTechnique::DEBUG_SILHOUETTE_MAP;
+    else if (t == "classes" || t == "debug_classes") view = SilhouetteShadowTechnique::DEBUG_CLASSES;
     else return false;
     return true;
 }
@@ -106,11 +109,12 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
         else if (k == "polygonoffsetfactor") t.setPolygonOffsetFactor(f);
         else t.setPolygonOffsetUnits(f);
     }
-    else if (k == "usedefaultshading")
+    else if (k == "usedefaultshading" || k == "blockerculling")
     {
         bool flag = true;
-        if (parseBool(value, flag)) t.setUseDefaultShading(flag);
-        else warnValue(key, value, "is not on/off; ignored");
+        if (!parseBool(value, flag)) warnValue(key, value, "is not on/off; ignored");
+        else if (k == "usedefaultshading") t.setUseDefaultShading(flag);
+        else t.setBlockerCulling(flag);
     }
     else return false;
     return true;
@@ -123,14 +127,17 @@ const std::vector<OptionDescription>& optionDescriptions()
     static const std::vector<OptionDescription> options = {
         {"Mode=<shadowmap|silhouette|hybrid|volume>", "Shadow algorithm (overrides the mode named in the file name)"},
         {"ShadowMapSize=<n>", "Width and height of each light's shadow map (MapSize=<n> also works)"},
-        {"DebugView=<none|mask>", "mask: show the shadow mask of DebugLight instead of the shaded scene"},
-        {"DebugLight=<n>", "The light (index among the lights found) that DebugView=mask shows"},
+        {"DebugView=<none|mask|pixels|silmap|classes>",
+         "mask: the shadow mask of DebugLight; pixels / silmap: its silhouette pixels / silhouette map "
+         "(silhouette mode); classes: red/blue shadow-map answers, green/black silhouette pixels"},
+        {"DebugLight=<n>", "The light (index among the lights found) that DebugView shows"},
         {"LightNum=<n>", "GL light number that casts shadows; -1 shadows every light"},
         {"MaxShadowLights=<n>", "Most lights shadowed at once (1..8)"},
         {"BaseTextureUnit=<n>", "First texture unit of the shadow textures"},
         {"PolygonOffsetFactor=<f>", "Slope-scaled depth bias"},
         {"PolygonOffsetUnits=<f>", "Constant depth bias"},
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
+        {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

@@ -126,8 +126,10 @@ TEST(Serializer, EverySetterOfTheHeaderIsSerialized)
     for (const osstest::PropertyRow& row : osstest::propertyRows()) rows.insert(row.name);
     const std::regex setter(R"(\bvoid\s+set(\w+)\s*\()");
     int setters = 0;
+    const std::set<std::string> runtimeOnly = {"Stats"}; // where statistics go: an object of the application
     for (std::sregex_iterator it(header.begin(), header.end(), setter), end; it != end; ++it, ++setters)
-        EXPECT_TRUE(rows.count((*it)[1].str())) << "set" << (*it)[1].str() << " has no serializer row";
+        EXPECT_TRUE(rows.count((*it)[1].str()) || runtimeOnly.count((*it)[1].str()))
+            << "set" << (*it)[1].str() << " has no serializer row";
     EXPECT_GE(setters, int(rows.size()));
 }
 

@@ -1,0 +1,320 @@
+#include <osgShadowSilhouette/GpuQueries>
+
+#include <osg/Depth>
+#include <osg/FrameStamp>
+#include <osg/GLExtensions>
+#include <osg/observer_ptr>
+#include <osg/State>
+
+#ifndef GL_ANY_SAMPLES_PASSED
+#define GL_ANY_SAMPLES_PASSED 0x8C2F
+#endif
+#ifndef GL_QUERY_WAIT
+#define GL_QUERY_WAIT 0x8E13
+#endif
+#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
+#endif
+#ifndef GL_DEPTH_CLAMP
+#define GL_DEPTH_CLAMP 0x864F
+#endif
+
+namespace osgShadowSilhouette {
+
+namespace {
+
+unsigned int frameOf(const osg::RenderInfo& info)
+{
+    const osg::FrameStamp* fs = info.getState() ? info.getState()->getFrameStamp() : nullptr;
+    return fs ? fs->getFrameNumber() : 0u;
+}
+
+bool queriesSupported(const osg::GLExtensions* ext)
+{
+    return ext && ext->glGenQueries && ext->glBeginQuery && ext->glEndQuery && ext->glGetQueryObjectuiv &&
+           ext->glGetQueryObjectui64v;
+}
+
+/** A drawable that only calls a function at its place in the render order. */
+class CallDrawable : public osg::Drawable
+{
+public:
+    CallDrawable(GpuCounter* counter, bool begin) : _counter(counter), _begin(begin)
+    {
+        setUseDisplayList(false);
+        setCullingActive(false);
+        setDataVariance(osg::Object::DYNAMIC);
+    }
+    CallDrawable(const CallDrawable& d, const osg::CopyOp& op)
+        : osg::Drawable(d, op), _counter(d._counter), _begin(d._begin) {}
+    osg::Object* cloneType() const override { return new CallDrawable(nullptr, true); }
+    osg::Object* clone(const osg::CopyOp& op) const override { return new CallDrawable(*this, op); }
+    const char* libraryName() const override { return "osgShadowSilhouette"; }
+    const char* className() const override { return "GpuCounterDrawable"; }
+
+    void drawImplementation(osg::RenderInfo& info) const override
+    {
+        if (!_counter) return;
+        if (_begin)
+            _counter->begin(info);
+        else
+            _counter->end(info);
+    }
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(-1, -1, -1, 1, 1, 1); }
+
+private:
+    osg::ref_ptr<GpuCounter> _counter;
+    bool _begin;
+};
+
+/** Draws a caster's box inside its occlusion query. */
+class IssueQueryCallback : public osg::Drawable::DrawCallback
+{
+public:
+    IssueQueryCallback(BlockerQueries* queries, unsigned int index) : _queries(queries), _index(index) {}
+    void drawImplementation(osg::RenderInfo& info, const osg::Drawable* drawable) const override
+    {
+        osg::ref_ptr<BlockerQueries> queries;
+        if (_queries.lock(queries)) queries->issue(info, _index, drawable);
+    }
+
+private:
+    osg::observer_ptr<BlockerQueries> _queries; // owns the drawable that owns this callback
+    unsigned int _index;
+};
+
+/** Draws a shadow volume only where its caster's query found a sample (on the GPU). */
+class ConditionalDrawCallback : public osg::Drawable::DrawCallback
+{
+public:
+    ConditionalDrawCallback(BlockerQueries* queries, unsigned int index) : _queries(queries), _index(index) {}
+    void drawImplementation(osg::RenderInfo& info, const osg::Drawable* drawable) const override
+    {
+        const GLuint id = _queries->issuedQuery(info, _index);
+        const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+        if (id == 0 || !ext->glBeginConditionalRender || !ext->glEndConditionalRender)
+        {
+            drawable->drawImplementation(info);
+            return;
+        }
+        ext->glBeginConditionalRender(id, GL_QUERY_WAIT);
+        drawable->drawImplementation(info);
+        ext->glEndConditionalRender();
+    }
+
+private:
+    osg::ref_ptr<BlockerQueries> _queries;
+    unsigned int _index;
+};
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+// GpuCounter
+
+GpuCounter::GpuCounter(GLenum target) : _target(target) {}
+
+GpuCounter::~GpuCounter() = default;
+
+osg::ref_ptr<osg::Drawable> GpuCounter::createBegin()
+{
+    return new CallDrawable(this, true);
+}
+
+osg::ref_ptr<osg::Drawable> GpuCounter::createEnd()
+{
+    return new CallDrawable(this, false);
+}
+
+void GpuCounter::begin(osg::RenderInfo& info)
+{
+    osg::State* state = info.getState();
+    const osg::GLExtensions* ext = state->get<osg::GLExtensions>();
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    PerContext& c = _contexts[info.getContextID()];
+    if (c.unsupported) return;
+    if (c.ids[0] == 0)
+    {
+        const bool statistics = _target == GL_FRAGMENT_SHADER_INVOCATIONS_ARB;
+        if (!queriesSupported(ext) ||
+            (statistics && !osg::isGLExtensionSupported(info.getContextID(), "GL_ARB_pipeline_statistics_query")))
+        {
+            c.unsupported = true;
+            return;
+        }
+        ext->glGenQueries(RING, c.ids);
+    }
+    // Take every finished result, oldest first, without waiting for the others.
+    for (unsigned int k = 0; k < RING; ++k)
+    {
+        const unsigned int i = (c.next + k) % RING;
+        if (!c.pending[i]) continue;
+        GLuint available = 0;
+        ext->glGetQueryObjectuiv(c.ids[i], GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) continue;
+        GLuint64 value = 0;
+        ext->glGetQueryObjectui64v(c.ids[i], GL_QUERY_RESULT, &value);
+        c.pending[i] = false;
+        _last.store(static_cast<long long>(value));
+    }
+    if (c.pending[c.next]) return; // the GPU is far behind: skip this frame rather than wait
+    ext->glBeginQuery(_target, c.ids[c.next]);
+    c.active = true;
+    _lastFrame.store(frameOf(info));
+}
+
+void GpuCounter::end(osg::RenderInfo& info)
+{
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    PerContext& c = _contexts[info.getContextID()];
+    if (!c.active) return;
+    ext->glEndQuery(_target);
+    c.active = false;
+    c.pending[c.next] = true;
+    c.next = (c.next + 1) % RING;
+}
+
+void GpuCounter::releaseGLObjects(osg::State* state) const
+{
+    // Query names die with their context; a context that lives on gets new ones.
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    if (state)
+        _contexts.erase(state->getContextID());
+    else
+        _contexts.clear();
+}
+
+// ---------------------------------------------------------------------------------------
+// BlockerQueries
+
+BlockerQueries::BlockerQueries() : _geode(new osg::Geode)
+{
+    _geode->setName("osgShadowSilhouette blocker queries");
+    _geode->setCullingActive(false);
+    _geode->setDataVariance(osg::Object::DYNAMIC);
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE | osg::StateAttribute::PROTECTED;
+    const auto off = osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE | osg::StateAttribute::PROTECTED;
+    osg::StateSet* ss = _geode->getOrCreateStateSet();
+    ss->setRenderBinDetails(100, "RenderBin"); // after every caster of the depth pass
+    ss->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false), on);
+    ss->setMode(GL_POLYGON_OFFSET_FILL, off); // raw box depths against biased map depths: conservative
+    ss->setMode(GL_DEPTH_CLAMP, on);          // box parts outside the depth range still count
+    ss->setMode(GL_CULL_FACE, off);
+}
+
+BlockerQueries::~BlockerQueries() = default;
+
+void BlockerQueries::update(const std::vector<Caster>& casters)
+{
+    static const GLuint boxIndices[36] = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1,
+                                          2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+    if (_boxes.size() != casters.size())
+    {
+        _geode->removeDrawables(0, _geode->getNumDrawables());
+        _boxes.resize(casters.size());
+        for (unsigned int i = 0; i < _boxes.size(); ++i)
+        {
+            if (!_boxes[i])
+            {
+                osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+                g->setUseDisplayList(false);
+                g->setUseVertexBufferObjects(true);
+                g->setDataVariance(osg::Object::DYNAMIC);
+                g->setCullingActive(false);
+                g->setVertexArray(new osg::Vec3Array(8));
+                g->addPrimitiveSet(new osg::DrawElementsUInt(GL_TRIANGLES, 36, boxIndices));
+                g->setDrawCallback(new IssueQueryCallback(this, i));
+                _boxes[i] = g;
+            }
+            _geode->addDrawable(_boxes[i].get());
+        }
+    }
+    for (std::size_t i = 0; i < casters.size(); ++i)
+    {
+        const osg::BoundingBox& local = casters[i].geometry->getBoundingBox();
+        osg::Vec3Array& v = static_cast<osg::Vec3Array&>(*_boxes[i]->getVertexArray());
+        bool changed = false;
+        for (unsigned int k = 0; k < 8; ++k)
+        {
+            const osg::Vec3 corner = osg::Vec3(osg::Vec3d(local.corner(k)) * casters[i].world);
+            changed |= v[k] != corner;
+            v[k] = corner;
+        }
+        if (changed)
+        {
+            v.dirty();
+            _boxes[i]->dirtyBound();
+        }
+    }
+}
+
+void BlockerQueries::issue(osg::RenderInfo& info, unsigned int index, const osg::Drawable* box)
+{
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    if (!queriesSupported(ext))
+    {
+        box->drawImplementation(info);
+        return;
+    }
+    const unsigned int frame = frameOf(info);
+    GLuint id = 0;
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+        PerContext& c = _contexts[info.getContextID()];
+        if (c.collectedFrame != frame) // first query of a frame: count last frame's answers
+        {
+            c.collectedFrame = frame;
+            unsigned int tested = 0, hidden = 0;
+            for (std::size_t i = 0; i < c.ids.size(); ++i)
+            {
+                if (c.issuedFrame[i] == ~0u || c.issuedFrame[i] == frame) continue;
+                GLuint available = 0, any = 1;
+                ext->glGetQueryObjectuiv(c.ids[i], GL_QUERY_RESULT_AVAILABLE, &available);
+                if (!available) continue;
+                ext->glGetQueryObjectuiv(c.ids[i], GL_QUERY_RESULT, &any);
+                ++tested;
+                hidden += any == 0 ? 1 : 0;
+            }
+            _tested.store(tested);
+            _hidden.store(hidden);
+        }
+        if (index >= c.ids.size())
+        {
+            const std::size_t old = c.ids.size();
+            c.ids.resize(std::max<std::size_t>(index + 1, _boxes.size()), 0);
+            c.issuedFrame.resize(c.ids.size(), ~0u);
+            ext->glGenQueries(static_cast<GLsizei>(c.ids.size() - old), c.ids.data() + old);
+        }
+        id = c.ids[index];
+        c.issuedFrame[index] = frame;
+    }
+    ext->glBeginQuery(GL_ANY_SAMPLES_PASSED, id);
+    box->drawImplementation(info);
+    ext->glEndQuery(GL_ANY_SAMPLES_PASSED);
+}
+
+GLuint BlockerQueries::issuedQuery(osg::RenderInfo& info, unsigned int index) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    auto it = _contexts.find(info.getContextID());
+    if (it == _contexts.end() || index >= it->second.ids.size()) return 0;
+    return it->second.issuedFrame[index] == frameOf(info) ? it->second.ids[index] : 0;
+}
+
+osg::ref_ptr<osg::Drawable::DrawCallback> BlockerQueries::createConditionalDraw(unsigned int index)
+{
+    return new ConditionalDrawCallback(this, index);
+}
+
+void BlockerQueries::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    if (state)
+        _contexts.erase(state->getContextID());
+    else
+        _contexts.clear();
+    for (const auto& box : _boxes) box->releaseGLObjects(state);
+}
+
+} // namespace osgShadowSilhouette
