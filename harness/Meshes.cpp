@@ -1,6 +1,10 @@
 #include "Meshes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <utility>
 
 namespace osshar {
 
@@ -146,6 +150,98 @@ osg::ref_ptr<osg::Geometry> makeGround(float cx, float cy, float side, float hei
     b.quad(b.add(osg::Vec3(cx - h, cy - h, height), up), b.add(osg::Vec3(cx + h, cy - h, height), up),
            b.add(osg::Vec3(cx + h, cy + h, height), up), b.add(osg::Vec3(cx - h, cy + h, height), up));
     return b.geometry("ground");
+}
+
+osg::ref_ptr<osg::Geometry> readOff(const std::string& path, std::string& error)
+{
+    std::ifstream in(path);
+    std::string magic;
+    long long nv = 0, nf = 0, ne = 0;
+    if (!(in >> magic) || magic != "OFF" || !(in >> nv >> nf >> ne) || nv < 3 || nf < 1)
+    {
+        error = "'" + path + "' is not an OFF file";
+        return nullptr;
+    }
+    Builder b;
+    for (long long i = 0; i < nv; ++i)
+    {
+        double x, y, z;
+        if (!(in >> x >> y >> z))
+        {
+            error = "'" + path + "': truncated vertex list";
+            return nullptr;
+        }
+        b.add(osg::Vec3(float(x), float(y), float(z)), osg::Vec3());
+    }
+    for (long long f = 0; f < nf; ++f)
+    {
+        int count = 0;
+        std::vector<unsigned int> poly;
+        if (!(in >> count) || count < 3)
+        {
+            error = "'" + path + "': malformed face " + std::to_string(f);
+            return nullptr;
+        }
+        for (int k = 0; k < count; ++k)
+        {
+            long long i = -1;
+            if (!(in >> i) || i < 0 || i >= nv)
+            {
+                error = "'" + path + "': face " + std::to_string(f) + " has a bad vertex index";
+                return nullptr;
+            }
+            poly.push_back(static_cast<unsigned int>(i));
+        }
+        for (int k = 1; k + 1 < count; ++k) b.tri(poly[0], poly[k], poly[k + 1]);
+    }
+    return b.geometry("off mesh");
+}
+
+osg::ref_ptr<osg::Geometry> subdivideMidpoint(const osg::Geometry& mesh, unsigned int levels)
+{
+    const osg::Vec3Array* source = dynamic_cast<const osg::Vec3Array*>(mesh.getVertexArray());
+    const osg::DrawElementsUInt* sourceIdx =
+        mesh.getNumPrimitiveSets() ? dynamic_cast<const osg::DrawElementsUInt*>(mesh.getPrimitiveSet(0)) : nullptr;
+    if (!source || !sourceIdx) return nullptr;
+    std::vector<osg::Vec3> v(source->begin(), source->end());
+    std::vector<unsigned int> t(sourceIdx->begin(), sourceIdx->end());
+    for (unsigned int level = 0; level < levels; ++level)
+    {
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> midpoints;
+        auto mid = [&](unsigned int a, unsigned int b) {
+            const auto key = std::minmax(a, b);
+            auto it = midpoints.find(key);
+            if (it != midpoints.end()) return it->second;
+            v.push_back((v[a] + v[b]) * 0.5f);
+            const unsigned int m = static_cast<unsigned int>(v.size() - 1);
+            midpoints.emplace(key, m);
+            return m;
+        };
+        std::vector<unsigned int> next;
+        next.reserve(t.size() * 4);
+        for (std::size_t i = 0; i + 2 < t.size(); i += 3)
+        {
+            const unsigned int a = t[i], b = t[i + 1], c = t[i + 2];
+            const unsigned int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            for (unsigned int k : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca}) next.push_back(k);
+        }
+        t.swap(next);
+    }
+    std::vector<osg::Vec3> normals(v.size());
+    for (std::size_t i = 0; i + 2 < t.size(); i += 3)
+    {
+        const osg::Vec3 n = (v[t[i + 1]] - v[t[i]]) ^ (v[t[i + 2]] - v[t[i]]); // area-weighted
+        for (int k = 0; k < 3; ++k) normals[t[i + k]] += n;
+    }
+    Builder b;
+    for (std::size_t i = 0; i < v.size(); ++i)
+    {
+        osg::Vec3 n = normals[i];
+        n.normalize();
+        b.add(v[i], n);
+    }
+    b.idx->assign(t.begin(), t.end());
+    return b.geometry("subdivided mesh");
 }
 
 } // namespace osshar

@@ -4,6 +4,8 @@
 
 #include <osg/Geometry>
 
+#include <string>
+
 namespace osshar {
 
 /** An axis-aligned box, centre c, full extents size; 24 vertices (flat faces), 12 triangles. */
@@ -20,6 +22,14 @@ osg::ref_ptr<osg::Geometry> makeTorus(const osg::Vec3& c, float R, float r, unsi
 
 /** A square in the plane z = height, facing +z, of side `side` centred on (cx, cy). */
 osg::ref_ptr<osg::Geometry> makeGround(float cx, float cy, float side, float height = 0.0f);
+
+/** A triangle mesh read from an OFF file (polygons fanned into triangles), or null with a
+ *  message in error. Vertices welded as the file gives them; no normals. */
+osg::ref_ptr<osg::Geometry> readOff(const std::string& path, std::string& error);
+
+/** Splits every triangle of an indexed triangle mesh into four at its edge midpoints (shared
+ *  edges share their midpoint), `levels` times, and sets smooth per-vertex normals. */
+osg::ref_ptr<osg::Geometry> subdivideMidpoint(const osg::Geometry& mesh, unsigned int levels);
 
 } // namespace osshar
 

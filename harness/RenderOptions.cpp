@@ -21,6 +21,62 @@ bool finite(const osg::Vec3d& v)
     return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
+/** The light options in command-line order: --spot-dir and --spot-cutoff apply to the
+ *  --light-pos before them. */
+bool readLights(osg::ArgumentParser& a, std::vector<LightArg>& lights, std::string& error)
+{
+    for (int i = 1; i < a.argc();)
+    {
+        const std::string arg = a[i];
+        double x = 0.0, y = 0.0, z = 0.0;
+        if (arg == "--light-dir" || arg == "--light-pos" || arg == "--spot-dir")
+        {
+            if (!a.read(i, arg, x, y, z))
+            {
+                error = arg + " needs three numbers";
+                return false;
+            }
+            const osg::Vec3d v(x, y, z);
+            if (!finite(v) || (arg != "--light-pos" && v.length2() == 0.0))
+            {
+                error = arg + " needs finite values and a non-zero direction";
+                return false;
+            }
+            if (arg != "--spot-dir")
+            {
+                LightArg light;
+                light.directional = arg == "--light-dir";
+                light.vector = v;
+                lights.push_back(light);
+            }
+            else if (lights.empty() || lights.back().directional)
+            {
+                error = "--spot-dir applies to a preceding --light-pos";
+                return false;
+            }
+            else
+                lights.back().spotDirection = v;
+        }
+        else if (arg == "--spot-cutoff")
+        {
+            if (!a.read(i, arg, x) || !(x >= 0.0 && (x <= 90.0 || x == 180.0)))
+            {
+                error = "--spot-cutoff needs an angle from 0 to 90 degrees (or 180: no cone)";
+                return false;
+            }
+            if (lights.empty() || lights.back().directional)
+            {
+                error = "--spot-cutoff applies to a preceding --light-pos";
+                return false;
+            }
+            lights.back().spotCutoff = x;
+        }
+        else
+            ++i;
+    }
+    return true;
+}
+
 } // namespace
 
 bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
@@ -46,19 +102,17 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     readVec3(a, "--up", o.up);
     double fovy;
     if (a.read("--fovy", fovy)) o.fovy = fovy;
-    for (bool more = true; more;)
+    if (!readLights(a, o.lights, error)) return false;
+    int budget = 0;
+    if (a.read("--max-shadow-lights", budget))
     {
-        std::optional<osg::Vec3d> v;
-        more = false;
-        if (readVec3(a, "--light-dir", v)) o.lights.push_back({true, *v}), more = true;
-        if (readVec3(a, "--light-pos", v)) o.lights.push_back({false, *v}), more = true;
-    }
-    for (const LightArg& l : o.lights)
-        if (!finite(l.vector) || (l.directional && l.vector.length2() == 0.0))
+        if (budget < 1)
         {
-            error = "--light-dir/--light-pos need finite values and a non-zero direction";
+            error = "--max-shadow-lights must be at least 1";
             return false;
         }
+        o.maxShadowLights = static_cast<unsigned int>(budget);
+    }
     a.read("--frames", o.frames);
     a.read("--warmup", o.warmup);
     o.frames = std::max(1, o.frames);
@@ -97,9 +151,10 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--mode shadowmap|silhouette|hybrid|volume|none|osgShadow:ShadowMap|osgShadow:SoftShadowMap|\n"
       << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap]\n"
       << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"
-      << "    [--light-dir X Y Z | --light-pos X Y Z]... [--frames N] [--warmup N]\n"
-      << "    [--out color.png] [--mask mask.png] [--offscreen]\n"
-      << "    [--reference ref.png] [--compare ref.png] [--diff diff.png] [--classes classes.png]\n"
+      << "    [--light-dir X Y Z | --light-pos X Y Z [--spot-dir X Y Z] [--spot-cutoff DEG]]...\n"
+      << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
+      << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
+      << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off]\n";
     return s.str();
 }

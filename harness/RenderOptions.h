@@ -12,11 +12,16 @@
 
 namespace osshar {
 
-/** A light given on the command line: --light-dir X Y Z (toward the light) or --light-pos X Y Z. */
+/** A light given on the command line: --light-dir X Y Z (toward the light) or --light-pos X Y Z,
+ *  the latter made a spot light by a following --spot-dir X Y Z and/or --spot-cutoff DEG. */
 struct LightArg
 {
     bool directional = true;
     osg::Vec3d vector;
+    osg::Vec3d spotDirection{0.0, 0.0, -1.0}; ///< --spot-dir (OpenGL's default axis)
+    double spotCutoff = 180.0;                ///< --spot-cutoff: half angle in degrees; 180: a point light
+
+    bool spot() const { return !directional && spotCutoff <= 90.0; }
 };
 
 struct RenderOptions
@@ -28,10 +33,11 @@ struct RenderOptions
     int width = 1024, height = 768;   ///< --size W H
     std::optional<osg::Vec3d> eye, center, up;
     std::optional<double> fovy;
-    std::vector<LightArg> lights;     ///< --light-dir / --light-pos (repeatable)
+    std::vector<LightArg> lights;     ///< --light-dir / --light-pos [--spot-dir] [--spot-cutoff] (repeatable)
+    unsigned int maxShadowLights = 0; ///< --max-shadow-lights N: the technique's light budget (0: its default)
     int frames = 20;                  ///< --frames N: timed frames
     int warmup = 3;                   ///< --warmup N
-    std::string out, mask;            ///< --out color.png, --mask mask.png
+    std::string out, mask;            ///< --out color.png, --mask mask.png (per light: %d, or _<i> before the extension)
     bool offscreen = false;           ///< --offscreen
     std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask

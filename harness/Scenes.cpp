@@ -11,6 +11,7 @@
 #include <osgUtil/SmoothingVisitor>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 namespace osshar {
@@ -161,47 +162,85 @@ Scene treeScene()
 
 const char* const BUNNY_FILE = "/usr/share/glmark2/models/bunny.obj";
 
-Scene bunnyScene()
+/** A scene of one model on a 16 x 16 ground plane: the model turned by `orientation`, then
+ *  -30 degrees about z, scaled to 3.5 units high and standing on z = 0 at the origin, with
+ *  the default scene's light. */
+Scene modelOnGround(const char* name, const std::string& description, osg::Node* model,
+                    const osg::Matrixd& orientation)
 {
-    Scene s{"bunny", nullptr, {}};
-    if (!osgDB::fileExists(BUNNY_FILE))
-    {
-        std::cerr << "scene 'bunny' needs " << BUNNY_FILE << " (Debian package glmark2-data)" << std::endl;
-        return s;
-    }
-    osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(BUNNY_FILE);
-    if (!model)
-    {
-        std::cerr << "scene 'bunny': cannot read " << BUNNY_FILE << " (osgDB's obj plugin)" << std::endl;
-        return s;
-    }
-    osgUtil::SmoothingVisitor smooth; // the file has no normals
-    model->accept(smooth);
-    // osgDB's obj plugin turns the y-up file z-up; make it 3.5 units high, turned 30 degrees,
-    // standing on z = 0.
     osg::ref_ptr<osg::MatrixTransform> fitted = new osg::MatrixTransform;
-    fitted->addChild(model.get());
-    fitted->setMatrix(osg::Matrixd::rotate(osg::DegreesToRadians(-30.0), osg::Vec3d(0, 0, 1)));
+    fitted->addChild(model);
+    fitted->setMatrix(orientation * osg::Matrixd::rotate(osg::DegreesToRadians(-30.0), osg::Vec3d(0, 0, 1)));
     osg::ComputeBoundsVisitor turned;
     fitted->accept(turned);
     const osg::BoundingBox bb = turned.getBoundingBox();
     const double scale = 3.5 / (bb.zMax() - bb.zMin());
     fitted->postMult(osg::Matrixd::translate(-bb.center().x(), -bb.center().y(), -bb.zMin()) *
                      osg::Matrixd::scale(scale, scale, scale));
+    Scene s{name, new osg::Group, {}};
+    s.root->setName(description);
+    s.root->addChild(coloured(makeGround(0, 0, 16), GROUND));
+    s.root->addChild(fitted.get());
+    s.root->addChild(makeLight(osg::Vec4(0.45f, -0.35f, 0.82f, 0.0f)));
+    s.view = {osg::Vec3d(1.5, -10, 5.5), osg::Vec3d(0, 0.5, 1.2), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
+Scene bunnyScene()
+{
+    if (!osgDB::fileExists(BUNNY_FILE))
+    {
+        std::cerr << "scene 'bunny' needs " << BUNNY_FILE << " (Debian package glmark2-data)" << std::endl;
+        return Scene{"bunny", nullptr, {}};
+    }
+    osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(BUNNY_FILE);
+    if (!model)
+    {
+        std::cerr << "scene 'bunny': cannot read " << BUNNY_FILE << " (osgDB's obj plugin)" << std::endl;
+        return Scene{"bunny", nullptr, {}};
+    }
+    osgUtil::SmoothingVisitor smooth; // the file has no normals
+    model->accept(smooth);
     osg::ref_ptr<osg::Material> m = new osg::Material;
     m->setColorMode(osg::Material::OFF);
     m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.85f, 0.8f, 0.7f, 1));
     m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.85f, 0.8f, 0.7f, 1));
     m->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0.3f, 0.3f, 0.3f, 1.0f));
     m->setShininess(osg::Material::FRONT_AND_BACK, 32.0f);
-    fitted->getOrCreateStateSet()->setAttributeAndModes(m.get());
-    s.root = new osg::Group;
-    s.root->setName("bunny: scanned mesh on a ground plane");
-    s.root->addChild(coloured(makeGround(0, 0, 16), GROUND));
-    s.root->addChild(fitted.get());
-    s.root->addChild(makeLight(osg::Vec4(0.45f, -0.35f, 0.82f, 0.0f)));
-    s.view = {osg::Vec3d(1.5, -10, 5.5), osg::Vec3d(0, 0.5, 1.2), osg::Vec3d(0, 0, 1), 40.0};
-    return s;
+    model->getOrCreateStateSet()->setAttributeAndModes(m.get());
+    // osgDB's obj plugin already turns the y-up file z-up.
+    return modelOnGround("bunny", "bunny: scanned mesh on a ground plane", model.get(), osg::Matrixd::identity());
+}
+
+#ifndef OSS_ELEPHANT_OFF
+#define OSS_ELEPHANT_OFF ""
+#endif
+
+/** libcgal-demo's elephant.off: extracted at configure time into the build tree, or found
+ *  through the environment variable OSS_ELEPHANT_OFF. */
+std::string elephantFile()
+{
+    const char* env = std::getenv("OSS_ELEPHANT_OFF");
+    return env && *env ? env : OSS_ELEPHANT_OFF;
+}
+
+Scene elephantScene()
+{
+    std::string error;
+    const std::string file = elephantFile();
+    osg::ref_ptr<osg::Geometry> raw = file.empty() ? nullptr : readOff(file, error);
+    if (!raw)
+    {
+        std::cerr << "scene 'elephant' needs elephant.off from the Debian package libcgal-demo "
+                  << "(data/meshes/ in /usr/share/doc/libcgal-dev/data.tar.gz; set OSS_ELEPHANT_OFF to its path)"
+                  << (error.empty() ? "" : ": " + error) << std::endl;
+        return Scene{"elephant", nullptr, {}};
+    }
+    // 5558 triangles, split three times: 355,712 (the seed measured a 345,944-triangle mesh).
+    osg::ref_ptr<osg::Geode> model = coloured(subdivideMidpoint(*raw, 3), osg::Vec4(0.7f, 0.68f, 0.65f, 1));
+    // The file is y-up (the elephant raises its trunk toward +y).
+    return modelOnGround("elephant", "elephant: libcgal-demo's elephant subdivided to 355,712 triangles, on a ground plane",
+                         model.get(), osg::Matrixd::rotate(osg::Vec3d(0, 1, 0), osg::Vec3d(0, 0, 1)));
 }
 
 /** The default scene's light source (its last child). */
@@ -267,7 +306,7 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing"};
+    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant"};
 }
 
 Scene createScene(const std::string& name)
@@ -280,6 +319,7 @@ Scene createScene(const std::string& name)
     if (name == "bunny") return bunnyScene();
     if (name == "dueling") return duelingScene();
     if (name == "grazing") return grazingScene();
+    if (name == "elephant") return elephantScene();
     return Scene{name, nullptr, {}};
 }
 

@@ -28,11 +28,12 @@ struct Scene
 /** Names of the built-in scenes: "default", "spheres", "poles", "cubes", "tree" (thin
  *  branches, 17k triangles), "bunny" (glmark2-data's scanned bunny on a ground plane),
  *  "dueling" (the default scene with the camera facing the light) and "grazing" (the default
- *  scene lit from 1.5 degrees above the ground, with a wall that receives the long shadows). */
+ *  scene lit from 1.5 degrees above the ground, with a wall that receives the long shadows),
+ *  "elephant" (libcgal-demo's elephant subdivided to 355,712 triangles on a ground plane). */
 std::vector<std::string> sceneNames();
 
 /** A built-in scene by name; root is null for an unknown name, and for "bunny" when its
- *  file is missing (with a message on stderr). */
+ *  file is missing, and for "elephant" when elephant.off is (with a message on stderr). */
 Scene createScene(const std::string& name);
 
 /** A LightSource holding GL light `lightNum`: directional toward `towardLight` (w = 0) or at a

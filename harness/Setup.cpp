@@ -40,22 +40,35 @@ osg::ref_ptr<osg::Group> loadContent(const RenderOptions& o, PreparedScene& scen
     return group;
 }
 
+/** Sets light's position and spot cone from a, given in world coordinates, for a light
+ *  source placed by localToWorld. */
+void placeLight(osg::Light& light, const LightArg& a, const osg::Matrixd& localToWorld)
+{
+    const osg::Matrixd toLocal = osg::Matrixd::inverse(localToWorld);
+    const osg::Vec4d pos(a.vector, a.directional ? 0.0 : 1.0);
+    light.setPosition(osg::Vec4(pos * toLocal));
+    light.setSpotCutoff(a.spot() ? float(a.spotCutoff) : 180.0f);
+    if (a.spot())
+    {
+        osg::Vec3d axis = osg::Matrixd::transform3x3(a.spotDirection, toLocal);
+        axis.normalize();
+        light.setDirection(osg::Vec3(axis));
+    }
+}
+
 void applyLights(const RenderOptions& o, PreparedScene& scene)
 {
     scene.lights = findLights(scene.content.get());
     for (std::size_t i = 0; i < o.lights.size(); ++i)
     {
-        const LightArg& a = o.lights[i];
-        const osg::Vec4 pos(a.vector.x(), a.vector.y(), a.vector.z(), a.directional ? 0.0f : 1.0f);
         if (i < scene.lights.size())
-        {
-            // Given in world coordinates: undo the light source's own placement.
-            const osg::Matrixd toLocal = osg::Matrixd::inverse(scene.lights[i].localToWorld);
-            osg::Vec4d local = osg::Vec4d(pos) * toLocal;
-            scene.lights[i].source->getLight()->setPosition(osg::Vec4(local));
-        }
+            placeLight(*scene.lights[i].source->getLight(), o.lights[i], scene.lights[i].localToWorld);
         else
-            scene.content->addChild(makeLight(pos, static_cast<int>(i)));
+        {
+            osg::ref_ptr<osg::LightSource> source = makeLight(osg::Vec4(0, 0, 1, 0), static_cast<int>(i));
+            placeLight(*source->getLight(), o.lights[i], osg::Matrixd::identity());
+            scene.content->addChild(source.get());
+        }
     }
     if (findLights(scene.content.get()).empty())
     {

@@ -97,6 +97,22 @@ std::vector<Polygon> clipPolyhedron(const std::vector<Polygon>& faces, const osg
     return out;
 }
 
+/** The distance where 1 / (c + l d + q d^2) times the light's brightest channel falls to 1/512. */
+double attenuationRange(const osg::Light& light)
+{
+    double brightest = 0.0;
+    for (const osg::Vec4& colour : {light.getAmbient(), light.getDiffuse(), light.getSpecular()})
+        for (int i = 0; i < 3; ++i) brightest = std::max(brightest, double(colour[i]));
+    const double c = light.getConstantAttenuation(), l = light.getLinearAttenuation(),
+                 q = light.getQuadraticAttenuation();
+    if (!(std::isfinite(c) && std::isfinite(l) && std::isfinite(q)) || l < 0.0 || q < 0.0 || (l == 0.0 && q == 0.0))
+        return std::numeric_limits<double>::infinity();
+    const double target = 512.0 * brightest - c; // solve q d^2 + l d = target
+    if (target <= 0.0) return 0.0;
+    if (q == 0.0) return target / l;
+    return (-l + std::sqrt(l * l + 4.0 * q * target)) / (2.0 * q);
+}
+
 osg::Matrixd textureScaleBias()
 {
     return osg::Matrixd::translate(1.0, 1.0, 1.0) * osg::Matrixd::scale(0.5, 0.5, 0.5);
@@ -135,6 +151,7 @@ bool LightDescription::fromLight(const osg::Light& light, const osg::Matrixd& li
             d.spotDirection.normalize();
             d.spotCutoffDeg = cutoff;
         }
+        d.range = attenuationRange(light);
     }
     out = d;
     return true;
@@ -245,6 +262,43 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     f.perspective = false;
     f.valid = true;
     return f;
+}
+
+bool lightReachesRegion(const LightDescription& light, const std::vector<osg::Vec3d>& region)
+{
+    if (region.empty()) return false;
+    if (light.type == LightDescription::DIRECTIONAL) return true;
+    osg::BoundingBoxd box;
+    for (const osg::Vec3d& p : region) box.expandBy(p);
+    const osg::Vec3d nearest(std::clamp(light.position.x(), box.xMin(), box.xMax()),
+                             std::clamp(light.position.y(), box.yMin(), box.yMax()),
+                             std::clamp(light.position.z(), box.zMin(), box.zMax()));
+    if ((nearest - light.position).length() > light.range) return false;
+    if (light.type != LightDescription::SPOT) return true;
+    // The cone lies on the positive side of every plane through its apex whose normal is
+    // within 90 degrees - cutoff of its axis: such a plane with every region point on its
+    // negative side separates the hull from the cone. Candidates: the axis itself, and the
+    // axis tilted away from the region's centre as far as the cone allows.
+    const osg::Vec3d& axis = light.spotDirection;
+    const double tilt = osg::PI_2 - osg::DegreesToRadians(std::min(light.spotCutoffDeg, 90.0));
+    osg::Vec3d side = box.center() - light.position;
+    side -= axis * (side * axis);
+    std::vector<osg::Vec3d> normals = {axis};
+    if (side.normalize() > 0.0) normals.push_back(axis * std::cos(tilt) - side * std::sin(tilt));
+    for (const osg::Vec3d& n : normals)
+    {
+        const bool separated = std::all_of(region.begin(), region.end(),
+                                           [&](const osg::Vec3d& p) { return (p - light.position) * n < 0.0; });
+        if (separated) return false;
+    }
+    // The sphere around the region's box: outside when the angle from the axis to its centre
+    // exceeds the cutoff by more than its angular radius.
+    const osg::Vec3d toCentre = box.center() - light.position;
+    const double distance = toCentre.length();
+    const double radius = box.radius();
+    if (distance <= radius) return true;
+    const double axisAngle = std::acos(std::clamp(toCentre * axis / distance, -1.0, 1.0));
+    return axisAngle - std::asin(radius / distance) <= osg::DegreesToRadians(light.spotCutoffDeg);
 }
 
 LightFrustum fitPerspectiveFrustum(const LightDescription& light, const std::vector<osg::Vec3d>& region,

@@ -494,13 +494,20 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     cullReceivers(cv, vd, stencilMode ? vd.stencil->getBaseStateSet() : nullptr);
 
     const std::vector<FoundLight> lights = collectLights(cv);
-    const std::vector<int> slots = assignShadowSlots(lights);
     Statistics stats;
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
     stats.effectiveMode = frame.mode;
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
     else prepareFrame(cv, frame);
+    // Lights whose cone or range misses what the view sees cost nothing: no passes, no slot.
+    std::vector<bool> reaches(lights.size());
+    for (std::size_t i = 0; i < lights.size(); ++i)
+    {
+        reaches[i] = lightReachesRegion(lights[i].description, frame.region);
+        if (!reaches[i] && castsShadow(lights[i])) ++stats.lightsSkipped;
+    }
+    const std::vector<int> slots = assignShadowSlots(lights, reaches);
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
@@ -525,13 +532,19 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     recordStatistics(stats);
 }
 
-std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<FoundLight>& lights) const
+bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
+{
+    return _lightNum < 0 || light.description.lightNum == _lightNum;
+}
+
+std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<FoundLight>& lights,
+                                                              const std::vector<bool>& reaches) const
 {
     std::vector<int> slots(lights.size(), -1);
     unsigned int slot = 0;
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
-        if (_lightNum >= 0 && lights[i].description.lightNum != _lightNum) continue;
+        if (!castsShadow(lights[i]) || !reaches[i]) continue;
         if (slot >= _maxShadowLights)
         {
             warnOnce(WARN_OVER_BUDGET, "more shadow-casting lights than MaxShadowLights (" +
@@ -788,18 +801,23 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
     const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
     const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
     vd.numLights->set(n);
-    const int used = static_cast<int>(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; }));
-    vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
+    // A shadowed light with nothing to shadow is lit as an unshadowed one (slot -1), so the
+    // stencil modes light it in their base pass and the receiver compiles only the slots
+    // up to the last one in use.
+    int used = 0;
     for (int i = 0; i < n; ++i)
     {
+        const bool shadowed = slots[i] >= 0 && vd.passes[slots[i]].frustum.valid;
         vd.lightIndex->setElement(i, lights[i].description.lightNum);
-        vd.shadowSlot->setElement(i, slots[i]);
-        if (slots[i] >= 0)
+        vd.shadowSlot->setElement(i, shadowed ? slots[i] : -1);
+        if (shadowed)
         {
+            used = std::max(used, slots[i] + 1);
             const osg::Matrixd eyeToTexture = eyeToWorld * vd.passes[slots[i]].frustum.worldToTexture();
             vd.eyeToShadow->setElement(slots[i], osg::Matrixf(eyeToTexture));
         }
     }
+    vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
     vd.maskLight->set(static_cast<int>(_debugLight));
 }
 

@@ -34,20 +34,7 @@ scripts/with-display.sh "$BUILD_DIR/bin/osgsilhouette-bench" \
 WALL=$(( $(date +%s) - START ))
 echo "sweep wall time: $((WALL / 60))m$((WALL % 60))s"
 
-# Replaces the lines between "<!-- BEGIN $2 -->" and "<!-- END $2 -->" of file $1 with the
-# contents of file $3 (appends the block when the markers are missing).
-replace_block() {
-  local file=$1 name=$2 body=$3 begin="<!-- BEGIN $2 -->" end="<!-- END $2 -->"
-  [ -f "$file" ] || : > "$file"
-  if ! grep -qF "$begin" "$file"; then
-    printf '\n%s\n%s\n' "$begin" "$end" >> "$file"
-  fi
-  awk -v b="$begin" -v e="$end" -v body="$body" '
-    $0 == b { print; while ((getline line < body) > 0) print line; skip = 1; next }
-    $0 == e { skip = 0 }
-    !skip { print }' "$file" > "$file.tmp"
-  mv "$file.tmp" "$file"
-}
+source scripts/replace-block.sh
 
 # docs/benchmarks.md: the generated results (headings one level down, plots under bench/).
 GEN=$(mktemp)

@@ -21,4 +21,9 @@ if ! dpkg -s $LIST >/dev/null 2>&1; then
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq $LIST >/dev/null
 fi
+# Without its recommends (Qt): libcgal-demo ships the elephant mesh of the lights benchmark.
+if ! dpkg -s libcgal-demo >/dev/null 2>&1; then
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo >/dev/null
+fi
 echo "dependencies: installed"

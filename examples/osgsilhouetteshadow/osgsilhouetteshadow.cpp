@@ -99,6 +99,7 @@ int main(int argc, char** argv)
         return 1;
     }
     if (technique) technique->setBlockerCulling(options.blockerCulling);
+    if (technique && options.maxShadowLights > 0) technique->setMaxShadowLights(options.maxShadowLights);
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
     const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||
                        !options.classes.empty();

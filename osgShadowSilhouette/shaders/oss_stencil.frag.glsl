@@ -12,7 +12,8 @@
 //                          (Chan and Durand 2004): front-facing to the light and 2x2 PCF
 //                          strictly between 0 and 1; every other fragment is discarded
 // With OSS_DEBUG_MASK the passes write the MEASURE.md mask of the light instead: the base
-// pass 0, the light pass 1 where the surface faces the light. With OSS_DEBUG_CLASSES they
+// pass 0 (1 where an unshadowed light faces the surface), the light pass 1 where the surface
+// faces the light. With OSS_DEBUG_CLASSES they
 // write the class colours (oss_classColor()): black base, green where the volumes leave the
 // light, red / blue where HYBRID's shadow map answers lit / shadowed.
 
@@ -37,6 +38,22 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 
 bool oss_facesLight(int n, vec3 p);
 vec4 oss_classColor(bool silhouette, bool lit);
+
+#ifdef OSS_DEBUG_MASK
+uniform int oss_numLights;
+uniform int oss_lightIndex[8];
+uniform int oss_maskLight;
+int oss_shadowSlotOf(int light);
+
+// The base pass's mask: 1 where the mask light is lit unshadowed (over the budget, or with
+// nothing to shadow: it has no light pass) and faces the surface, else 0.
+float oss_unshadowedMask(vec3 p)
+{
+    int n = oss_lightIndex[clamp(oss_maskLight, 0, 7)];
+    bool facing = oss_facesLight(n, p);
+    return oss_maskLight < oss_numLights && oss_shadowSlotOf(n) < 0 && facing ? 1.0 : 0.0;
+}
+#endif
 
 vec4 oss_textured(vec4 color)
 {
@@ -68,7 +85,9 @@ void main()
     gl_FragColor = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0));
 #endif
 #else
-#if defined(OSS_DEBUG_MASK) || defined(OSS_DEBUG_CLASSES)
+#if defined(OSS_DEBUG_MASK)
+    gl_FragColor = vec4(vec3(oss_unshadowedMask(oss_eyePosition.xyz)), 1.0); // a light pass may add the rest
+#elif defined(OSS_DEBUG_CLASSES)
     gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0); // shadowed until a light pass says otherwise
 #else
     gl_FragColor = oss_textured(oss_unshadowedColor);

@@ -273,3 +273,68 @@ TEST(LightDescription, NonFiniteLightIsRefused)
     light.setPosition(osg::Vec4(0, 0, 0, 0));
     EXPECT_FALSE(LightDescription::fromLight(light, osg::Matrixd(), d));
 }
+
+namespace {
+
+/** A box region: the corners of [-h, h]^2 x [0, top]. */
+std::vector<osg::Vec3d> boxRegion(double h, double top)
+{
+    std::vector<osg::Vec3d> r = square(h, 0.0);
+    for (const osg::Vec3d& p : square(h, top)) r.push_back(p);
+    return r;
+}
+
+LightDescription spotAt(const osg::Vec3d& position, const osg::Vec3d& axis, double cutoffDeg)
+{
+    LightDescription d;
+    d.type = LightDescription::SPOT;
+    d.position = position;
+    d.spotDirection = axis;
+    d.spotDirection.normalize();
+    d.spotCutoffDeg = cutoffDeg;
+    return d;
+}
+
+} // namespace
+
+TEST(LightReach, DirectionalAndUnattenuatedLightsReachAnyRegion)
+{
+    LightDescription sun;
+    EXPECT_TRUE(lightReachesRegion(sun, boxRegion(10, 2)));
+    LightDescription point;
+    point.type = LightDescription::POINT;
+    point.position = osg::Vec3d(0, 0, 1000);
+    EXPECT_TRUE(lightReachesRegion(point, boxRegion(10, 2)));
+    EXPECT_FALSE(lightReachesRegion(point, {})) << "an empty region is reached by nothing";
+}
+
+TEST(LightReach, SpotAimingAwayMissesTheRegion)
+{
+    const std::vector<osg::Vec3d> region = boxRegion(10, 4);
+    EXPECT_FALSE(lightReachesRegion(spotAt({2, -1, 8}, {0.05, 0.1, 1}, 30), region)) << "above the region, aiming up";
+    EXPECT_TRUE(lightReachesRegion(spotAt({2, -1, 8}, {0, 0, -1}, 30), region)) << "aiming down at it";
+    EXPECT_FALSE(lightReachesRegion(spotAt({50, 0, 5}, {1, 0, 0}, 60), region)) << "beside it, aiming away";
+    EXPECT_TRUE(lightReachesRegion(spotAt({50, 0, 5}, {0, 1, 0}, 89), region)) << "a wide cone sideways grazes it";
+    EXPECT_FALSE(lightReachesRegion(spotAt({0, 200, 5}, {0, 0, -1}, 20), region)) << "far away, down";
+}
+
+TEST(LightReach, AttenuationRangeEndsBeforeTheRegion)
+{
+    osg::ref_ptr<osg::Light> lightRef = new osg::Light(0);
+    osg::Light& light = *lightRef;
+    light.setPosition(osg::Vec4(0, 0, 60, 1));
+    light.setAmbient(osg::Vec4(0.2f, 0.2f, 0.2f, 1));
+    light.setDiffuse(osg::Vec4(0.8f, 0.8f, 0.8f, 1));
+    light.setSpecular(osg::Vec4(0.3f, 0.3f, 0.3f, 1));
+    light.setQuadraticAttenuation(0.5f);
+    LightDescription d;
+    ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd(), d));
+    // 1 / (1 + 0.5 d^2) * 0.8 = 1/512  ->  d = sqrt((512 * 0.8 - 1) / 0.5)
+    EXPECT_NEAR(d.range, std::sqrt((512.0 * 0.8 - 1.0) / 0.5), 1e-4);
+    EXPECT_FALSE(lightReachesRegion(d, boxRegion(10, 4)));
+    d.position = osg::Vec3d(0, 0, 30);
+    EXPECT_TRUE(lightReachesRegion(d, boxRegion(10, 4)));
+    light.setQuadraticAttenuation(0.0f);
+    ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd(), d));
+    EXPECT_TRUE(std::isinf(d.range));
+}

@@ -25,9 +25,14 @@ struct ShadowedRender
 
     ShadowedRender(const std::string& sceneName, const std::string& mode, unsigned int mapSize, int width = 1024,
                    int height = 768)
+        : ShadowedRender(optionsFor(sceneName), mode, mapSize, width, height)
     {
-        osshar::RenderOptions options;
-        options.scene = sceneName;
+    }
+
+    /** The scene, lights and view of a renderer command line (RenderOptions). */
+    ShadowedRender(const osshar::RenderOptions& options, const std::string& mode, unsigned int mapSize, int width,
+                   int height)
+    {
         std::string error;
         if (!osshar::prepareScene(options, scene, error) ||
             !osshar::makeShadowedRoot(mode, mapSize, scene, root, technique, error))
@@ -40,6 +45,13 @@ struct ShadowedRender
         }
         renderer->setSceneData(root.get());
         renderer->setView(scene.view);
+    }
+
+    static osshar::RenderOptions optionsFor(const std::string& sceneName)
+    {
+        osshar::RenderOptions options;
+        options.scene = sceneName;
+        return options;
     }
 
     bool valid() const { return renderer && renderer->valid() && technique; }
