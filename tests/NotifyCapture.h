@@ -4,6 +4,7 @@
 #define OSS_TESTS_NOTIFYCAPTURE_H
 
 #include <osg/Notify>
+#include <osg/ref_ptr>
 
 #include <mutex>
 #include <string>
