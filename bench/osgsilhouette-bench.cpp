@@ -12,6 +12,7 @@
  * DIR/benchmark.md (tables) and, with gnuplot, DIR/<scene>.png (frame time against wrong_pct,
  * the Pareto front drawn). Progress goes to stderr. */
 
+#include "Classes.h"
 #include "Offscreen.h"
 #include "Peers.h"
 #include "RenderOptions.h"
@@ -57,6 +58,7 @@ struct Row
     int width = 0, height = 0, frames = 0;
     double frameMs = 0, gpuMs = -1;
     ossref::Comparison cmp;
+    double silhouettePct = -1; ///< share of geometry pixels treated as silhouette pixels; -1: does not apply
     std::string notes;
 };
 
@@ -199,6 +201,8 @@ ossref::Mask ourMask(osshar::Renderer& renderer, SilhouetteShadowTechnique& tech
     return image ? ossref::maskFromImage(*image) : ossref::Mask{};
 }
 
+std::string fmt(double v, int decimals);
+
 /** Renders, times and scores one technique at one map size. */
 bool measure(const std::string& sceneName, const std::string& technique, unsigned int mapSize, const Options& o,
              const SceneReference& ref, osshar::Renderer& renderer, Row& row, std::string& error)
@@ -214,10 +218,21 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
     renderer.setView(scene.view);
     const osshar::FrameTiming timing = renderer.timeFrames(o.warmup, o.frames);
     row = Row{sceneName, technique, usesMapSize(technique) ? mapSize : 0u, o.width, o.height, timing.frames,
-              timing.cpuMsMedian, timing.gpuMsMedian, {}, ""};
+              timing.cpuMsMedian, timing.gpuMsMedian, {}, -1, ""};
     ossref::Mask reference = ref.mask, mask;
     if (ours)
+    {
+        const SilhouetteShadowTechnique::Statistics stats = ours->getStatistics();
+        if (stats.volumeOverdraw() >= 0.0)
+            row.notes = "volume overdraw " + fmt(stats.volumeOverdraw(), 2) + " fragments/px";
+        if (stats.blockersTested > 0)
+            row.notes += "; volumes of " + std::to_string(stats.blockersSkipped) + "/" +
+                         std::to_string(stats.blockersTested) + " casters skipped (hidden from the light)";
         mask = ourMask(renderer, *ours);
+        const SilhouetteShadowTechnique::Mode mode = ours->getEffectiveMode();
+        if (mode == SilhouetteShadowTechnique::SILHOUETTE_MAP || mode == SilhouetteShadowTechnique::HYBRID)
+            row.silhouettePct = osshar::countClasses(*osshar::renderClasses(renderer, *ours, 0)).silhouettePercent();
+    }
     else
     {
         const osshar::PeerMask peer = osshar::renderPeerMask(renderer, root.get(), osshar::makeUnshadowedRoot(scene).get());
@@ -253,7 +268,8 @@ std::string csvLine(const Row& r)
     std::ostringstream s;
     s << r.scene << ',' << r.technique << ',' << r.mapSize << ',' << r.width << ',' << r.height << ',' << r.frames << ','
       << fmt(r.frameMs, 3) << ',' << (r.gpuMs >= 0 ? fmt(r.gpuMs, 3) : "") << ',' << r.cmp.geometryPixels << ','
-      << r.cmp.wrongPixels << ',' << fmt(r.cmp.wrongPct, 4) << ',' << r.cmp.coverageMismatch << ",," << csvField(r.notes);
+      << r.cmp.wrongPixels << ',' << fmt(r.cmp.wrongPct, 4) << ',' << r.cmp.coverageMismatch << ','
+      << (r.silhouettePct >= 0 ? fmt(r.silhouettePct, 3) : "") << ',' << csvField(r.notes);
     return s.str();
 }
 
@@ -378,14 +394,15 @@ void writeSceneTable(std::ostream& md, const std::vector<Row>& rows, const std::
 {
     const std::vector<const Row*> sceneRows = rowsOf(rows, scene);
     const std::vector<const Row*> front = paretoFront(sceneRows);
-    md << "| technique | map | frame ms | GPU ms | wrong % | wrong px | coverage mismatch | Pareto |\n"
-          "|---|---:|---:|---:|---:|---:|---:|:---:|\n";
+    md << "| technique | map | frame ms | GPU ms | wrong % | wrong px | coverage mismatch | silhouette px % | Pareto |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
     for (const Row* r : sceneRows)
     {
         const bool onFront = std::find(front.begin(), front.end(), r) != front.end();
         md << "| " << r->technique << " | " << mapText(*r) << " | " << fmt(r->frameMs, 2) << " | "
            << (r->gpuMs >= 0 ? fmt(r->gpuMs, 2) : "-") << " | " << fmt(r->cmp.wrongPct, 3) << " | " << r->cmp.wrongPixels
-           << " | " << r->cmp.coverageMismatch << " | " << (onFront ? "yes" : "") << " |\n";
+           << " | " << r->cmp.coverageMismatch << " | " << (r->silhouettePct >= 0 ? fmt(r->silhouettePct, 2) : "-")
+           << " | " << (onFront ? "yes" : "") << " |\n";
     }
 }
 

@@ -3,6 +3,7 @@
 #include <osg/DisplaySettings>
 #include <osg/GLExtensions>
 #include <osg/Timer>
+#include <osgViewer/GraphicsWindow>
 
 #include <algorithm>
 
@@ -135,6 +136,19 @@ void Renderer::setView(const View& view)
     osg::Camera* camera = _viewer->getCamera();
     camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
     camera->setProjectionMatrixAsPerspective(view.fovy, double(_width) / double(_height), 0.1, 1000.0);
+}
+
+void Renderer::resize(int width, int height)
+{
+    osg::GraphicsContext* gc = _viewer->getCamera()->getGraphicsContext();
+    if (!gc) return;
+    if (osgViewer::GraphicsWindow* window = dynamic_cast<osgViewer::GraphicsWindow*>(gc))
+        window->setWindowRectangle(0, 0, width, height);
+    else
+        gc->resized(0, 0, width, height);
+    _viewer->getCamera()->setViewport(0, 0, width, height); // resized() scales it; make it exact
+    _width = width, _height = height;
+    _hooks->width = width, _hooks->height = height;
 }
 
 FrameTiming Renderer::timeFrames(int warmup, int frames)

@@ -41,6 +41,9 @@ public:
     /** Renders one frame with the given clear colour and returns its RGB pixels (bottom row first). */
     osg::ref_ptr<osg::Image> renderAndCapture(const osg::Vec4& clearColor = osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f));
 
+    /** Resizes the window (a pbuffer can only shrink its viewport) and the read-back to
+     *  width x height; call setView() again for the new aspect ratio. */
+    void resize(int width, int height);
     int width() const { return _width; }
     int height() const { return _height; }
 

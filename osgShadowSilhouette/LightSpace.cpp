@@ -312,6 +312,10 @@ LightFrustum fitPerspectiveFrustum(const LightDescription& light, const std::vec
         osg::Vec3d centre;
         for (const osg::Vec3d& p : region) centre += p;
         axis = centre / static_cast<double>(region.size()) - light.position;
+        // A light exactly at the region's centre still needs an axis: toward the casters'
+        // centre, else straight down.
+        if (finite(axis) && axis.length2() == 0.0) axis = casters.center() - light.position;
+        if (finite(axis) && axis.length2() == 0.0) axis = osg::Vec3d(0.0, 0.0, -1.0);
     }
     if (!finite(axis) || axis.length2() == 0.0) return f;
     axis.normalize();

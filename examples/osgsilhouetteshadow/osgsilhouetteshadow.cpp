@@ -17,6 +17,8 @@
 #include "RenderOptions.h"
 #include "Setup.h"
 
+#include <osgShadowSilhouette/StatsHandlerLines>
+
 #include <osgDB/WriteFile>
 #include <osgGA/StateSetManipulator>
 #include <osgGA/TrackballManipulator>
@@ -56,7 +58,7 @@ std::string perLightName(const std::string& pattern, unsigned int index)
     return pattern.substr(0, dot) + "_" + std::to_string(index) + (dot == std::string::npos ? "" : pattern.substr(dot));
 }
 
-int runWindowed(osshar::PreparedScene& scene, osg::Node* root)
+int runWindowed(osshar::PreparedScene& scene, osg::Node* root, SilhouetteShadowTechnique* technique)
 {
     osgViewer::Viewer viewer;
     viewer.setLightingMode(osg::View::NO_LIGHT);
@@ -64,7 +66,9 @@ int runWindowed(osshar::PreparedScene& scene, osg::Node* root)
     osg::ref_ptr<osgGA::TrackballManipulator> manip = new osgGA::TrackballManipulator;
     manip->setHomePosition(scene.view.eye, scene.view.center, scene.view.up);
     viewer.setCameraManipulator(manip.get());
-    viewer.addEventHandler(new osgViewer::StatsHandler);
+    osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
+    if (technique) osgShadowSilhouette::addStatsLines(viewer, *stats, *technique);
+    viewer.addEventHandler(stats.get());
     viewer.addEventHandler(new osgViewer::WindowSizeHandler);
     viewer.addEventHandler(new osgGA::StateSetManipulator(viewer.getCamera()->getOrCreateStateSet()));
     return viewer.run();
@@ -103,7 +107,7 @@ int main(int argc, char** argv)
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
     const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||
                        !options.classes.empty();
-    if (!batch) return runWindowed(scene, root.get());
+    if (!batch) return runWindowed(scene, root.get(), technique.get());
 
     osshar::Renderer renderer(options.width, options.height, options.offscreen);
     if (!renderer.valid())

@@ -9,7 +9,10 @@
 #include "Classes.h"
 #include "GLTestSupport.h"
 
+#include <osgShadowSilhouette/StatsHandlerLines>
+
 #include <osg/Stats>
+#include <osgViewer/Viewer>
 
 namespace {
 
@@ -132,6 +135,15 @@ TEST(HybridStatistics, StatisticsReachAnOsgStats)
         EXPECT_GT(overdraw, 1.0) << "the cubes' volumes overlap many times";
     }
     r.technique->setStats(nullptr);
+}
+
+TEST(HybridStatistics, StatsHandlerLinesRecordIntoTheViewerStats)
+{
+    osgViewer::Viewer viewer;
+    osg::ref_ptr<osgViewer::StatsHandler> handler = new osgViewer::StatsHandler;
+    osg::ref_ptr<SilhouetteShadowTechnique> technique = new SilhouetteShadowTechnique;
+    osgShadowSilhouette::addStatsLines(viewer, *handler, *technique);
+    EXPECT_EQ(technique->getStats(), viewer.getViewerStats());
 }
 
 TEST(HybridStatistics, ShadowVolumeCountsItsFragmentsAndMarksNoSilhouettePixels)

@@ -1,0 +1,162 @@
+// Stress: awkward lights, in every mode. Each case asserts a finite image and wrong_pct
+// against the exact reference within the bound of its mode.
+#include "StressSupport.h"
+
+#include <tuple>
+
+using namespace osstest;
+
+namespace {
+
+const ModeBounds TYPICAL{0.3, 0.15, 0.03, 0.03};
+
+/** A direction toward the light at the default scene's azimuth, elevationDeg above the ground. */
+osg::Vec4 elevatedLight(double elevationDeg)
+{
+    const double e = osg::DegreesToRadians(elevationDeg);
+    osg::Vec3d h(0.45, -0.35, 0.0);
+    h.normalize();
+    return osg::Vec4(float(h.x() * std::cos(e)), float(h.y() * std::cos(e)), float(std::sin(e)), 0.0f);
+}
+
+/** Turns light 0 into a point light at p (or a spot light when cutoffDeg < 180). */
+void makePositional(ShadowedRender& r, const osg::Vec3& p, const osg::Vec3& spotDirection = osg::Vec3(0, 0, -1),
+                    float cutoffDeg = 180.0f)
+{
+    osg::Light* light = lightOf(r);
+    light->setPosition(osg::Vec4(p, 1.0f));
+    light->setDirection(spotDirection);
+    light->setSpotCutoff(cutoffDeg);
+}
+
+using ModeAndValue = std::tuple<const char*, double>;
+
+class ModeAndElevation : public ::testing::TestWithParam<ModeAndValue>
+{
+};
+
+std::string modeAndValueName(const ::testing::TestParamInfo<ModeAndValue>& info)
+{
+    std::string value = std::to_string(std::get<1>(info.param));
+    value = value.substr(0, value.find_last_not_of('0') + 1);
+    for (char& c : value)
+        if (c == '.' || c == '-') c = '_';
+    return std::string(std::get<0>(info.param)) + "_" + value;
+}
+
+} // namespace
+
+// The light 0.5 to 2 degrees above the ground: the ground is in the grazing band (the
+// reference leaves it out), the long shadows fall on the casters and on the wall.
+TEST_P(ModeAndElevation, GrazingLight)
+{
+    const char* mode = std::get<0>(GetParam());
+    ShadowedRender r("grazing", mode, 2048, STRESS_WIDTH, STRESS_HEIGHT);
+    ASSERT_TRUE(r.valid());
+    lightOf(r)->setPosition(elevatedLight(std::get<1>(GetParam())));
+    expectWithinBound(r, ModeBounds{0.15, 0.03, 0.03, 0.03}.of(mode));
+}
+
+INSTANTIATE_TEST_SUITE_P(Grazing, ModeAndElevation,
+                         ::testing::Combine(::testing::ValuesIn(STRESS_MODES), ::testing::Values(0.5, 1.0, 2.0)),
+                         modeAndValueName);
+
+// Light straight down (+z): the boxes' side faces are exactly edge-on, their shadows exactly
+// under them.
+TEST_P(StressMode, LightAlongZAxis)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    lightOf(r)->setPosition(osg::Vec4(0, 0, 1, 0));
+    expectWithinBound(r, TYPICAL.of(GetParam()));
+}
+
+// Light along +x: exactly in the plane of the ground and of every horizontal face (N.L = 0:
+// left out as undecidable), shadows of infinite length across the casters.
+void lightAlongXAxis(const char* mode)
+{
+    ShadowedRender r = stressRender(mode);
+    ASSERT_TRUE(r.valid());
+    lightOf(r)->setPosition(osg::Vec4(1, 0, 0, 0));
+    expectWithinBound(r, TYPICAL.of(mode));
+}
+
+TEST_P(StencilMode, LightAlongXAxisInTheGroundPlane)
+{
+    lightAlongXAxis(GetParam());
+}
+
+TEST_P(MapMode, DISABLED_LightAlongXAxisInTheGroundPlane)
+{
+    // Fails (docs/robustness.md): 10.4% wrong in SHADOW_MAP, 8.0% in SILHOUETTE_MAP, of the
+    // pixels left once the ground (N.L = 0) is set aside; the stencil modes are exact.
+    lightAlongXAxis(GetParam());
+}
+
+// A point light exactly in the plane of the green box's +x face (x = 1.5).
+TEST_P(StressMode, PointLightInAFacePlane)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    makePositional(r, osg::Vec3(1.5f, -6.0f, 7.0f));
+    expectWithinBound(r, ModeBounds{0.45, 0.05, 0.02, 0.02}.of(GetParam()));
+}
+
+// A point light 0.01 above the sphere's pole: its shadow covers most of the ground, and
+// the cylinder's top is above the light.
+void pointLightVeryCloseToACaster(const char* mode)
+{
+    ShadowedRender r = stressRender(mode);
+    ASSERT_TRUE(r.valid());
+    makePositional(r, osg::Vec3(2.5f, 2.5f, 3.51f));
+    expectWithinBound(r, TYPICAL.of(mode));
+}
+
+TEST(StressLight, PointLightVeryCloseToACasterVolume)
+{
+    pointLightVeryCloseToACaster("volume");
+}
+
+TEST_P(DepthMapMode, DISABLED_PointLightVeryCloseToACaster)
+{
+    // Fails (docs/robustness.md): 21.3% wrong in every mode that uses a depth map (one
+    // perspective frustum cannot hold what the light sees, nearly a whole sphere).
+    pointLightVeryCloseToACaster(GetParam());
+}
+
+// A point light in the hole of a torus, inside the torus's bounds: the ring's shadow
+// surrounds the light's foot on the ground.
+TEST_P(StressMode, PointLightInsideACastersBounds)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    addToScene(r, osshar::makeTorus(osg::Vec3(-1.5f, -5.0f, 3.0f), 1.5f, 0.4f, 48, 16).get());
+    makePositional(r, osg::Vec3(-1.5f, -5.0f, 3.0f));
+    expectWithinBound(r, ModeBounds{0.6, 0.05, 0.02, 0.02}.of(GetParam()));
+}
+
+// A spot light with a 1 degree cone: a small lit disc, with a caster's shadow inside it.
+TEST_P(StressMode, SpotLightWithATinyCone)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    addToScene(r, flatTriangles(boxTriangles({-2.05f, -5.05f, 3}, {-1.95f, -4.95f, 3.1f}), "small box").get());
+    makePositional(r, osg::Vec3(-2, -5, 12), osg::Vec3(0, 0, -1), 1.0f);
+    expectWithinBound(r, TYPICAL.of(GetParam()));
+}
+
+// A spot light with an 89 degree cone low over the scene: nearly a hemisphere.
+TEST_P(StressMode, SpotLightWithAVeryWideCone)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    makePositional(r, osg::Vec3(1, 0, 6), osg::Vec3(0, 0, -1), 89.0f);
+    // A 178 degree frustum spreads the map's texels thin at its rim (measured 0.36, 0.21,
+    // 0.19 and 0.002%).
+    expectWithinBound(r, ModeBounds{0.75, 0.45, 0.4, 0.02}.of(GetParam()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, StressMode, ::testing::ValuesIn(STRESS_MODES));
+INSTANTIATE_TEST_SUITE_P(Modes, StencilMode, ::testing::ValuesIn(STENCIL_MODES));
+INSTANTIATE_TEST_SUITE_P(Modes, MapMode, ::testing::ValuesIn(MAP_MODES));
+INSTANTIATE_TEST_SUITE_P(Modes, DepthMapMode, ::testing::ValuesIn(DEPTH_MAP_MODES));
