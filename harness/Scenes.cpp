@@ -284,6 +284,26 @@ Scene grazingScene()
     return s;
 }
 
+Scene ringScene()
+{
+    // A point light amid its casters: eight pillars on a circle around it and a low wall
+    // piece inside, so shadows fall in every direction; one perspective map cannot hold them.
+    Scene s{"ring", new osg::Group, {}};
+    s.root->setName("ring: a point light inside a ring of pillars");
+    s.root->addChild(coloured(makeGround(0, 0, 20), GROUND));
+    for (int i = 0; i < 8; ++i)
+    {
+        const double a = osg::DegreesToRadians(45.0 * i + 10.0);
+        const osg::Vec3 c(float(3.2 * std::cos(a)), float(3.2 * std::sin(a)), 1.25f);
+        s.root->addChild(coloured(makeBox(c, osg::Vec3(0.6f, 0.6f, 2.5f)), osg::Vec4(0.75f, 0.45f, 0.3f, 1)));
+    }
+    s.root->addChild(coloured(makeBox(osg::Vec3(-1.2f, 0.8f, 0.3f), osg::Vec3(1.2f, 0.3f, 0.6f)), osg::Vec4(0.3f, 0.6f, 0.8f, 1)));
+    s.root->addChild(coloured(makeSphere(osg::Vec3(0.9f, -0.9f, 0.4f), 0.4f, 32, 16), osg::Vec4(0.4f, 0.75f, 0.35f, 1)));
+    s.root->addChild(makeLight(osg::Vec4(0.0f, 0.0f, 1.6f, 1.0f)));
+    s.view = {osg::Vec3d(4, -12, 11), osg::Vec3d(0, 0, 0.5), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
 class FindLightsVisitor : public osg::NodeVisitor
 {
 public:
@@ -306,7 +326,7 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant"};
+    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant", "ring"};
 }
 
 Scene createScene(const std::string& name)
@@ -320,6 +340,7 @@ Scene createScene(const std::string& name)
     if (name == "dueling") return duelingScene();
     if (name == "grazing") return grazingScene();
     if (name == "elephant") return elephantScene();
+    if (name == "ring") return ringScene();
     return Scene{name, nullptr, {}};
 }
 

@@ -29,7 +29,8 @@ struct Scene
  *  branches, 17k triangles), "bunny" (glmark2-data's scanned bunny on a ground plane),
  *  "dueling" (the default scene with the camera facing the light) and "grazing" (the default
  *  scene lit from 1.5 degrees above the ground, with a wall that receives the long shadows),
- *  "elephant" (libcgal-demo's elephant subdivided to 355,712 triangles on a ground plane). */
+ *  "elephant" (libcgal-demo's elephant subdivided to 355,712 triangles on a ground plane),
+ *  "ring" (a point light amid its casters: eight pillars around it). */
 std::vector<std::string> sceneNames();
 
 /** A built-in scene by name; root is null for an unknown name, and for "bunny" when its

@@ -264,6 +264,82 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     return f;
 }
 
+bool needsCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region, double maxFovDeg)
+{
+    if (light.type != LightDescription::POINT || region.empty()) return false;
+    osg::Vec3d axis;
+    for (const osg::Vec3d& p : region) axis += p;
+    axis = axis / static_cast<double>(region.size()) - light.position;
+    if (axis.normalize() == 0.0) return true; // the light amid the region
+    const double cosMax = std::cos(osg::DegreesToRadians(0.5 * maxFovDeg));
+    for (const osg::Vec3d& p : region)
+    {
+        osg::Vec3d d = p - light.position;
+        if (d.normalize() > 0.0 && d * axis < cosMax) return true;
+    }
+    return false;
+}
+
+double cubeFaceFov(unsigned int mapSize, double marginTexels)
+{
+    const double size = std::max(1u, mapSize);
+    const double inner = std::max(0.8, 1.0 - 2.0 * marginTexels / size); // at most ~12.7 degrees wider
+    return osg::RadiansToDegrees(2.0 * std::atan(1.0 / inner));
+}
+
+std::vector<LightFrustum> fitCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region,
+                                       const osg::BoundingBoxd& casters, unsigned int mapSize)
+{
+    std::vector<LightFrustum> faces;
+    if (region.empty() || !casters.valid() || !finite(light.position)) return faces;
+    static const osg::Vec3d axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const osg::Vec3d ups[6] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}};
+    const double fov = cubeFaceFov(mapSize);
+    const double tanHalf = std::tan(osg::DegreesToRadians(0.5 * fov));
+    const std::array<osg::Vec3d, 8> casterCorners = boxCorners(casters);
+    // Every caster point inside a face's pyramid is at least this deep along its axis: the
+    // depth precision of a face depends on it (0 when the light is among the casters).
+    const osg::Vec3d nearestCaster(std::clamp(light.position.x(), casters.xMin(), casters.xMax()),
+                                   std::clamp(light.position.y(), casters.yMin(), casters.yMax()),
+                                   std::clamp(light.position.z(), casters.zMin(), casters.zMax()));
+    const double casterDistance = (nearestCaster - light.position).length() / std::sqrt(1.0 + 2.0 * tanHalf * tanHalf);
+    for (int face = 0; face < 6; ++face)
+    {
+        LightFrustum f;
+        f.view = osg::Matrixd::lookAt(light.position, light.position + axes[face], ups[face]);
+        // Outside the pyramid when every point is beyond one of its planes (in eye space,
+        // looking down -z: depth = -z, inside |x|, |y| <= depth * tanHalf, depth > 0).
+        const auto outside = [&](const auto& points) {
+            bool beyond[5] = {true, true, true, true, true};
+            for (const osg::Vec3d& p : points)
+            {
+                const osg::Vec3d q = p * f.view;
+                const double depth = -q.z();
+                beyond[0] = beyond[0] && depth <= 0.0;
+                beyond[1] = beyond[1] && q.x() > depth * tanHalf;
+                beyond[2] = beyond[2] && -q.x() > depth * tanHalf;
+                beyond[3] = beyond[3] && q.y() > depth * tanHalf;
+                beyond[4] = beyond[4] && -q.y() > depth * tanHalf;
+            }
+            return beyond[0] || beyond[1] || beyond[2] || beyond[3] || beyond[4];
+        };
+        if (outside(region) || outside(casterCorners)) continue;
+        Range depth, casterDepth;
+        for (const osg::Vec3d& p : region) depth.expand(-(p * f.view).z());
+        for (const osg::Vec3d& p : casterCorners) casterDepth.expand(-(p * f.view).z());
+        if (depth.hi <= 0.0) continue;
+        const double zFar = depth.hi * 1.01;
+        const double zNear = std::max({casterDepth.lo * 0.99, casterDistance * 0.99, zFar * 1e-3});
+        if (zNear >= zFar) continue;
+        f.projection = osg::Matrixd::perspective(fov, 1.0, zNear, zFar);
+        f.perspective = true;
+        f.faceCore = 0.5 / tanHalf;
+        f.valid = true;
+        faces.push_back(f);
+    }
+    return faces;
+}
+
 bool lightReachesRegion(const LightDescription& light, const std::vector<osg::Vec3d>& region)
 {
     if (region.empty()) return false;

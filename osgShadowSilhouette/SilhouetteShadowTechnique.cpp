@@ -31,6 +31,7 @@ enum WarningKey
     WARN_BAD_LIGHT,
     WARN_MAP_SIZE,
     WARN_NO_STENCIL,
+    WARN_FACE_SLOTS,
 };
 
 /** Culls the shadowed scene's children from a light-space camera that has no children of its own. */
@@ -416,18 +417,22 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     osg::StateSet* ss = new osg::StateSet;
     vd->receiverStateSet = ss;
     if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
+    const unsigned int slots = slotCapacity();
     ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
+    ss->setDefine(shader::DEFINE_MAX_SHADOW_SLOTS, std::to_string(slots));
 
     vd->numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
     vd->lightIndex = new osg::Uniform(osg::Uniform::INT, shader::LIGHT_INDEX, shader::MAX_SCENE_LIGHTS);
     vd->shadowSlot = new osg::Uniform(osg::Uniform::INT, shader::SHADOW_SLOT, shader::MAX_SCENE_LIGHTS);
-    vd->eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, _maxShadowLights);
+    vd->eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, slots);
+    vd->slotOwner = new osg::Uniform(osg::Uniform::INT, shader::SLOT_OWNER, slots);
+    vd->slotCore = new osg::Uniform(osg::Uniform::FLOAT, shader::SLOT_CORE, slots);
     vd->maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
     osg::ref_ptr<osg::Uniform> samplers =
-        new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, _maxShadowLights);
+        new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, slots);
     osg::ref_ptr<osg::Uniform> silhouetteSamplers =
-        new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, _maxShadowLights);
-    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+        new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, slots);
+    for (unsigned int slot = 0; slot < slots; ++slot)
     {
         samplers->setElement(slot, int(_baseTextureUnit + slot));
         silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot)));
@@ -440,11 +445,13 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->shadowSlot->setElement(i, -1);
     }
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
-                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get()})
+                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
+                            vd->slotCore.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
-    vd->passes.resize(_maxShadowLights);
+    vd->passes.resize(slots);
+    vd->slotInUse.assign(slots, false);
     return vd.release();
 }
 
@@ -511,16 +518,25 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
-    std::vector<osg::Texture2D*> silhouetteMaps(_maxShadowLights, _defaultSilhouetteTexture.get());
-    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+    const unsigned int capacity = slotCapacity();
+    std::vector<osg::Texture2D*> silhouetteMaps(capacity, _defaultSilhouetteTexture.get());
+    for (unsigned int slot = 0; slot < capacity; ++slot)
+    {
         vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
                                                          osg::StateAttribute::ON);
+        vd.slotOwner->setElement(slot, int(slot));
+        vd.slotCore->setElement(slot, 0.0f);
+        vd.slotInUse[slot] = false;
+    }
+    // Cube faces of point lights take the slots after the lights' own.
+    unsigned int nextFreeSlot = 0;
+    for (int slot : slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (slots[i] < 0) continue;
         ++stats.lightsShadowed;
-        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), silhouetteMaps[slots[i]],
-                  stats);
+        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), nextFreeSlot,
+                  silhouetteMaps, stats);
     }
     bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
 
@@ -530,6 +546,14 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     if (const osg::Viewport* viewport = cv.getViewport())
         stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
     recordStatistics(stats);
+}
+
+unsigned int SilhouetteShadowTechnique::slotCapacity() const
+{
+    // Two texture units per slot (depth map, silhouette map) from BaseTextureUnit, within the
+    // 32 image units of a fragment stage; never fewer than the light budget.
+    const unsigned int units = _baseTextureUnit < 32 ? (32 - _baseTextureUnit) / 2 : 0;
+    return std::max(_maxShadowLights, std::min<unsigned int>(shader::MAX_SHADOW_SLOTS, units));
 }
 
 bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
@@ -569,7 +593,42 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
 
 void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
                                           const LightDescription& light, unsigned int slot,
-                                          osg::Texture2D*& silhouetteMap, Statistics& stats)
+                                          unsigned int& nextFreeSlot, std::vector<osg::Texture2D*>& silhouetteMaps,
+                                          Statistics& stats)
+{
+    std::vector<LightFrustum> frusta;
+    if (frame.mode != SHADOW_VOLUME && light.type == LightDescription::POINT && needsCubeFaces(light, frame.region))
+    {
+        frusta = fitCubeFaces(light, frame.region, frame.casters, _shadowMapSize);
+        if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > vd.passes.size())
+        {
+            warnOnce(WARN_FACE_SLOTS, "light " + std::to_string(light.lightNum) + " needs " +
+                                          std::to_string(frusta.size()) + " cube faces and only " +
+                                          std::to_string(vd.passes.size() - nextFreeSlot + 1) + " of the " +
+                                          std::to_string(vd.passes.size()) +
+                                          " shadow slots are free; it gets one perspective map (see BaseTextureUnit)");
+            frusta.clear();
+        }
+    }
+    if (frusta.empty()) frusta.push_back(fitLightFrustum(light, frame.region, frame.casters));
+    if (!frusta.front().valid)
+    {
+        vd.passes[slot].frustum = LightFrustum();
+        ++stats.lightsSkipped; // nothing can shadow what this view sees
+        return;
+    }
+    for (std::size_t k = 0; k < frusta.size(); ++k)
+    {
+        const unsigned int s = k == 0 ? slot : nextFreeSlot++;
+        vd.slotOwner->setElement(s, int(slot));
+        vd.slotCore->setElement(s, float(frusta[k].faceCore));
+        cullSlot(cv, vd, frame, light, s, frusta[k], silhouetteMaps[s], stats);
+    }
+}
+
+void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
+                                         const LightDescription& light, unsigned int slot, const LightFrustum& frustum,
+                                         osg::Texture2D*& silhouetteMap, Statistics& stats)
 {
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     LightPass& pass = vd.passes[slot];
@@ -582,15 +641,14 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
         pass = createLightPass(slot);
         pass.depthTexture->setShadowComparison(!silhouette);
     }
-    pass.frustum = fitLightFrustum(light, frame.region, frame.casters);
-    if (!pass.frustum.valid)
-    {
-        ++stats.lightsSkipped; // nothing can shadow what this view sees
-        return;
-    }
+    pass.frustum = frustum;
     if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
-    const bool blockers = frame.mode == HYBRID && _blockerCulling;
+    vd.slotInUse[slot] = true;
+    // Blocker culling tests casters against this map alone: not for a cube face, which sees
+    // only part of the light's casters.
+    const bool blockers = frame.mode == HYBRID && _blockerCulling && frustum.faceCore == 0.0;
     if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
+    if (!blockers) pass.blockers = nullptr;
     if (blockers) pass.blockers->update(frame.casterList);
     osg::Node* queries = blockers ? pass.blockers->getNode() : nullptr;
     if (pass.depthCamera->getNumChildren() != (queries ? 1u : 0u) || (queries && pass.depthCamera->getChild(0) != queries))
@@ -688,7 +746,7 @@ void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
 void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
 {
     osg::StateSet& ss = *vd.receiverStateSet;
-    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+    for (unsigned int slot = 0; slot < slotCapacity(); ++slot)
     {
         if (maps.empty())
             ss.removeTextureAttribute(silhouetteUnit(slot), osg::StateAttribute::TEXTURE);
@@ -804,20 +862,28 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
     // A shadowed light with nothing to shadow is lit as an unshadowed one (slot -1), so the
     // stencil modes light it in their base pass and the receiver compiles only the slots
     // up to the last one in use.
-    int used = 0;
     for (int i = 0; i < n; ++i)
     {
         const bool shadowed = slots[i] >= 0 && vd.passes[slots[i]].frustum.valid;
         vd.lightIndex->setElement(i, lights[i].description.lightNum);
         vd.shadowSlot->setElement(i, shadowed ? slots[i] : -1);
-        if (shadowed)
-        {
-            used = std::max(used, slots[i] + 1);
-            const osg::Matrixd eyeToTexture = eyeToWorld * vd.passes[slots[i]].frustum.worldToTexture();
-            vd.eyeToShadow->setElement(slots[i], osg::Matrixf(eyeToTexture));
-        }
+    }
+    int used = 0;
+    bool faces = false;
+    for (unsigned int s = 0; s < vd.passes.size(); ++s)
+    {
+        const bool lightSlot = std::find(slots.begin(), slots.end(), int(s)) != slots.end();
+        if (!vd.passes[s].frustum.valid || !(vd.slotInUse[s] || lightSlot)) continue;
+        vd.eyeToShadow->setElement(s, osg::Matrixf(eyeToWorld * vd.passes[s].frustum.worldToTexture()));
+        if (!vd.slotInUse[s]) continue;
+        used = int(s) + 1;
+        faces = faces || vd.passes[s].frustum.faceCore > 0.0;
     }
     vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
+    if (faces)
+        vd.receiverStateSet->setDefine(shader::DEFINE_CUBE_FACES);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_CUBE_FACES);
     vd.maskLight->set(static_cast<int>(_debugLight));
 }
 

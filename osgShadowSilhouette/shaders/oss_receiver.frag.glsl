@@ -8,10 +8,13 @@
 // normal faces away from it (the conventions of the exact reference). With OSS_DEBUG_CLASSES
 // it writes the class colours of that light (oss_classColor()).
 
-#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
 #pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#ifndef OSS_MAX_SHADOW_SLOTS
+#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
 #ifndef OSS_NUM_SHADOW_SLOTS
 #define OSS_NUM_SHADOW_SLOTS 0
@@ -27,13 +30,13 @@ uniform int oss_numLights;
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform int oss_maskLight;
 uniform sampler2D oss_baseTexture;
-uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 #ifdef OSS_SILHOUETTE_MAP
 #define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
 #else
 #define OSS_SHADOW_SAMPLER sampler2DShadow
 #endif
-uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 
 float oss_shadowTerm(int light, vec4 eyePosition);
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
@@ -43,14 +46,22 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // execute both sides of a branch on SIMD rasterizers such as llvmpipe.
 // In the silhouette-map mode the term comes from oss_silhouetteTerm() (oss_silhouette.frag.glsl).
 #ifdef OSS_SILHOUETTE_MAP
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
 float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 vec4 oss_silhouetteDebug(vec4 eyePosition);
 #define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #else
 #define OSS_SLOT_TERM(s) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #endif
+#ifdef OSS_CUBE_FACES
+// A point light's cube faces multiply its term (oss_shadow.frag.glsl); each light's colour
+// is added once all its faces are in.
+uniform int oss_slotOwner[OSS_MAX_SHADOW_SLOTS];
+float oss_faceGate(int slot, vec4 eyePosition, float term);
+#define OSS_ADD_SLOT(s) lightTerm[oss_slotOwner[s]] *= oss_faceGate(s, oss_eyePosition, OSS_SLOT_TERM(s))
+#else
 #define OSS_ADD_SLOT(s) color += OSS_SLOT_TERM(s) * oss_shadowedColor[s]
+#endif
 
 #if defined(OSS_DEBUG_MASK) || defined(OSS_DEBUG_CLASSES)
 bool oss_facesLight(int n, vec3 p);
@@ -75,6 +86,11 @@ void main()
 void main()
 {
     vec3 color = oss_unshadowedColor.rgb;
+#ifdef OSS_CUBE_FACES
+    float lightTerm[OSS_MAX_SHADOW_LIGHTS];
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+        lightTerm[s] = 1.0;
+#endif
 #if OSS_NUM_SHADOW_SLOTS > 0
     OSS_ADD_SLOT(0);
 #endif
@@ -98,6 +114,22 @@ void main()
 #endif
 #if OSS_NUM_SHADOW_SLOTS > 7
     OSS_ADD_SLOT(7);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 8
+    OSS_ADD_SLOT(8);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 9
+    OSS_ADD_SLOT(9);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 10
+    OSS_ADD_SLOT(10);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 11
+    OSS_ADD_SLOT(11);
+#endif
+#ifdef OSS_CUBE_FACES
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+        color += lightTerm[s] * oss_shadowedColor[s];
 #endif
     vec4 result = vec4(color, oss_unshadowedColor.a);
 #ifdef OSS_BASE_TEXTURE

@@ -8,25 +8,31 @@
 // Applications link this shader into their own programs and call oss_shadowTerm().
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
-#pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_SILHOUETTE_MAP)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#ifndef OSS_MAX_SHADOW_SLOTS
+#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
+#endif
+#ifndef OSS_NUM_SHADOW_SLOTS
+#define OSS_NUM_SHADOW_SLOTS OSS_MAX_SHADOW_SLOTS // the slots in use this frame, when the technique sets it
 #endif
 #define OSS_MAX_SCENE_LIGHTS 8
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
 uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 unshadowed
-uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];// eye space -> light texture space [0,1]^3
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];// eye space -> light texture space [0,1]^3
 #ifdef OSS_SILHOUETTE_MAP
 #define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
 #else
 #define OSS_SHADOW_SAMPLER sampler2DShadow
 #endif
-uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 #ifdef OSS_SILHOUETTE_MAP
 // Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
 float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 
@@ -37,19 +43,55 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
     return c.w <= 0.0 ? 1.0 : textureProj(map, c); // behind a perspective light: outside its map
 }
 
-// The shadow term of shadow slot `slot`. Sampler arrays take constant indices here: a
-// dynamic index is slow on some drivers (llvmpipe) and needs GLSL 4 elsewhere.
+#ifdef OSS_SILHOUETTE_MAP
+#define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#else
+#define OSS_MAP_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)
+#endif
+
+#ifdef OSS_CUBE_FACES
+// A point light's cube faces (docs/lights.md): each face's map answers only for its own
+// 90-degree square of directions, a few texels inside its slightly wider map; the light's
+// term is the product of its faces' terms, 1 outside each face's own directions.
+uniform int oss_slotOwner[OSS_MAX_SHADOW_SLOTS];   // the light slot whose term a slot's map multiplies
+uniform float oss_slotCore[OSS_MAX_SHADOW_SLOTS];  // cube face: half side of its own square; 0: whole map
+
+// term where the eye-space position lies in slot `slot`'s own directions, else 1.
+float oss_faceGate(int slot, vec4 eyePosition, float term)
+{
+    float core = oss_slotCore[slot];
+    vec4 c = oss_eyeToShadow[slot] * eyePosition;
+    vec2 d = abs(c.xy / c.w - 0.5);
+    return core <= 0.0 || (c.w > 0.0 && max(d.x, d.y) <= core) ? term : 1.0;
+}
+#endif
+
+// The shadow term of the light of shadow slot `slot`. Sampler arrays take constant indices
+// here: a dynamic index is slow on some drivers (llvmpipe) and needs GLSL 4 elsewhere.
 float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 {
-    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
-        if (s == slot)
-#ifdef OSS_SILHOUETTE_MAP
-            return oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+#ifdef OSS_CUBE_FACES
+    float term = 1.0;
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (oss_slotOwner[s] == slot)
+            term *= oss_faceGate(s, eyePosition, OSS_MAP_TERM(s, eyePosition));
+    return term;
 #else
-            return oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
-#endif
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (s == slot)
+            return OSS_MAP_TERM(s, eyePosition);
     return 1.0;
+#endif
 }
+
+#ifndef OSS_SILHOUETTE_MAP
+// The 2x2 PCF of the light of shadow slot `slot` (the stencil passes of HYBRID): its own
+// map's, or the product of its cube faces'.
+float oss_lightPcf(int slot, vec4 eyePosition)
+{
+    return oss_shadowSlotTerm(slot, eyePosition);
+}
+#endif
 
 // The shadow slot of GL light `light`, or -1 when it casts no shadow.
 int oss_shadowSlotOf(int light)

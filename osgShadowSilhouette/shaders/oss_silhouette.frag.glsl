@@ -10,10 +10,13 @@
 // Frames: see osgShadowSilhouette/SilhouettePoints; the C++ twin is silhouetteMapLit().
 // Compiled empty unless OSS_SILHOUETTE_MAP is defined.
 
-#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
 #ifdef OSS_SILHOUETTE_MAP
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#ifndef OSS_MAX_SHADOW_SLOTS
+#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
 #define OSS_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a corner
 
@@ -209,9 +212,9 @@ float oss_silhouettePixelOverlay(sampler2D depthMap, mat4 eyeToShadow, vec4 eyeP
 #if defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP)
 uniform int oss_maskLight;
 uniform int oss_lightIndex[8];
-uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
-uniform sampler2D oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
+uniform sampler2D oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
 int oss_shadowSlotOf(int light);
 
 // The debug overlay (rgb, opacity) of the light oss_maskLight (see the DebugView values).

@@ -17,9 +17,12 @@
 // write the class colours (oss_classColor()): black base, green where the volumes leave the
 // light, red / blue where HYBRID's shadow map answers lit / shadowed.
 
-#pragma import_defines(OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
+#endif
+#ifndef OSS_MAX_SHADOW_SLOTS
+#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
 #ifndef OSS_LIGHT_NUM
 #define OSS_LIGHT_NUM 0
@@ -31,10 +34,10 @@ in vec4 oss_unshadowedColor;
 in vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
 
 uniform sampler2D oss_baseTexture;
-uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_LIGHTS];
-uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
+uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 
-float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
+float oss_lightPcf(int slot, vec4 eyePosition);
 
 bool oss_facesLight(int n, vec3 p);
 vec4 oss_classColor(bool silhouette, bool lit);
@@ -66,14 +69,14 @@ vec4 oss_textured(vec4 color)
 void main()
 {
 #if defined(OSS_HYBRID_MASK)
-    float pcf = oss_pcf(oss_shadowMap[OSS_HYBRID_MASK], oss_eyeToShadow[OSS_HYBRID_MASK], oss_eyePosition);
+    float pcf = oss_lightPcf(OSS_HYBRID_MASK, oss_eyePosition);
     if (!(pcf > 0.0 && pcf < 1.0) || !oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz))
         discard;
     gl_FragColor = vec4(0.0);
 #elif defined(OSS_LIGHT_PASS)
     float visible = 1.0;
 #ifdef OSS_HYBRID_SHADOW_MAP
-    visible = step(0.5, oss_pcf(oss_shadowMap[OSS_LIGHT_PASS], oss_eyeToShadow[OSS_LIGHT_PASS], oss_eyePosition));
+    visible = step(0.5, oss_lightPcf(OSS_LIGHT_PASS, oss_eyePosition));
 #endif
 #if defined(OSS_DEBUG_CLASSES) && defined(OSS_HYBRID_SHADOW_MAP)
     gl_FragColor = oss_classColor(false, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) && visible > 0.5);

@@ -338,3 +338,56 @@ TEST(LightReach, AttenuationRangeEndsBeforeTheRegion)
     ASSERT_TRUE(LightDescription::fromLight(light, osg::Matrixd(), d));
     EXPECT_TRUE(std::isinf(d.range));
 }
+
+TEST(CubeFaces, LightAmidTheRegionNeedsFaces)
+{
+    LightDescription point;
+    point.type = LightDescription::POINT;
+    point.position = osg::Vec3d(0, 0, 1);
+    EXPECT_TRUE(needsCubeFaces(point, boxRegion(10, 4))) << "inside the region";
+    point.position = osg::Vec3d(0, 0, 60);
+    EXPECT_FALSE(needsCubeFaces(point, boxRegion(10, 4))) << "far above it: one frustum";
+    LightDescription spot = spotAt({0, 0, 1}, {0, 0, -1}, 40);
+    EXPECT_FALSE(needsCubeFaces(spot, boxRegion(10, 4))) << "spots keep their cone";
+}
+
+TEST(CubeFaces, FaceFovLeavesAMarginOfTexels)
+{
+    const double fov = cubeFaceFov(512, 4.0);
+    EXPECT_GT(fov, 90.0);
+    EXPECT_LT(fov, 92.0);
+    // The 90-degree square ends 4 texels inside the map: 0.5 / tan(fov / 2) = 0.5 - 4 / 512.
+    EXPECT_NEAR(0.5 / std::tan(osg::DegreesToRadians(fov / 2)), 0.5 - 4.0 / 512, 1e-12);
+    EXPECT_LE(cubeFaceFov(1, 4.0), 2.0 * osg::RadiansToDegrees(std::atan(1.25)) + 1e-9) << "capped for tiny maps";
+}
+
+TEST(CubeFaces, LightInsideARingKeepsTheFacesThatSeeCastersOverTheRegion)
+{
+    LightDescription point;
+    point.type = LightDescription::POINT;
+    point.position = osg::Vec3d(0, 0, 1);
+    // The ring's box reaches z = 2; the region is the ground slab around the light.
+    const osg::BoundingBoxd ring(-4, -4, 0, 4, 4, 2);
+    const std::vector<LightFrustum> faces = fitCubeFaces(point, boxRegion(10, 0.1), ring, 512);
+    ASSERT_EQ(faces.size(), 5u) << "+x, -x, +y, -y and -z; +z sees neither region nor casters above the light";
+    for (const LightFrustum& f : faces)
+    {
+        EXPECT_TRUE(f.valid && f.perspective);
+        EXPECT_NEAR(f.faceCore, 0.5 - 4.0 / 512, 1e-9);
+        // The light's own position maps to the face's eye origin.
+        expectNear(point.position * f.view, osg::Vec3d(), 1e-9);
+    }
+    // Every direction from the light lands in the own square of exactly one face (or on a
+    // border between two), inside that face's map.
+    for (const osg::Vec3d& d : {osg::Vec3d(1, 0.3, -0.2), osg::Vec3d(-0.2, -1, -0.9), osg::Vec3d(0.1, 0.2, -1)})
+    {
+        int owners = 0;
+        for (const LightFrustum& f : faces)
+        {
+            const osg::Vec3d t = (point.position + d) * f.worldToTexture();
+            const osg::Vec4d h = osg::Vec4d(point.position + d, 1.0) * f.view * f.projection;
+            if (h.w() > 0 && std::fabs(t.x() - 0.5) <= f.faceCore && std::fabs(t.y() - 0.5) <= f.faceCore) ++owners;
+        }
+        EXPECT_EQ(owners, 1) << d.x() << " " << d.y() << " " << d.z();
+    }
+}
