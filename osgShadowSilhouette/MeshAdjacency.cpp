@@ -35,6 +35,26 @@ struct IndexCollector
     }
 };
 
+/** osg::TriangleIndexFunctor reads a whole triangle past the end of a GL_TRIANGLES index
+ *  list whose length is not a multiple of 3: this one hands it whole triangles only. */
+struct WholeTrianglesFunctor : public osg::TriangleIndexFunctor<IndexCollector>
+{
+    using Base = osg::TriangleIndexFunctor<IndexCollector>;
+    static GLsizei whole(GLenum mode, GLsizei count) { return mode == GL_TRIANGLES ? count - count % 3 : count; }
+    void drawElements(GLenum mode, GLsizei count, const GLubyte* indices) override
+    {
+        Base::drawElements(mode, whole(mode, count), indices);
+    }
+    void drawElements(GLenum mode, GLsizei count, const GLushort* indices) override
+    {
+        Base::drawElements(mode, whole(mode, count), indices);
+    }
+    void drawElements(GLenum mode, GLsizei count, const GLuint* indices) override
+    {
+        Base::drawElements(mode, whole(mode, count), indices);
+    }
+};
+
 template<class ArrayT>
 void copyPositions(const osg::Array& array, std::vector<osg::Vec3d>& out)
 {
@@ -318,7 +338,7 @@ bool collectTriangles(const osg::Geometry& geometry, TriangleSoup& soup)
     soup.positions.clear();
     soup.indices.clear();
     if (!copyVertexArray(geometry.getVertexArray(), soup.positions)) return false;
-    osg::TriangleIndexFunctor<IndexCollector> functor;
+    WholeTrianglesFunctor functor;
     functor.indices = &soup.indices;
     for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
         geometry.getPrimitiveSet(i)->accept(functor);

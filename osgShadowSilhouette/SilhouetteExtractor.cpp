@@ -167,6 +167,7 @@ void capSizes(CastMode mode, std::size_t faces, std::size_t lit, std::size_t& li
 std::size_t classifyPlanes(const osg::Vec4d* planes, std::size_t count, const osg::Vec4d& light,
                            std::uint8_t* out)
 {
+    if (count == 0) return 0; // planes may be null (an empty mesh's vector)
     const double* p = planes->ptr();
     const __m128d lxy = _mm_set_pd(light.y(), light.x());
     const __m128d lzw = _mm_set_pd(light.w(), light.z());

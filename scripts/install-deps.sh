@@ -13,6 +13,7 @@ PACKAGES=(
   libgl1-mesa-dri libgl-dev xvfb xauth x11-utils  # OpenGL (llvmpipe without a GPU), virtual display
   glmark2-data                               # bunny.obj: a real scanned mesh for benchmarks
   gnuplot-nox                                # benchmark plots
+  clang libclang-rt-dev                      # fuzz targets: clang with libFuzzer, ASan, UBSan runtimes
 )
 # Strip the comments above into a clean list.
 LIST=$(printf '%s\n' "${PACKAGES[@]}" | sed 's/#.*//' | tr -s ' \n' ' ')

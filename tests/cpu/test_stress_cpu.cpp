@@ -142,7 +142,9 @@ TEST(StressMesh, NonManifoldFinAndRepeatedTrianglesAreKeptAsOpenFaces)
     EXPECT_GE(a.nonManifoldFaces.size(), 1u);
     EXPECT_FALSE(a.isClosed());
     for (const osg::Vec4d& light : {osg::Vec4d(0, 0, 1, 0), osg::Vec4d(1, 0, 0, 0), osg::Vec4d(0.2, 0.3, 0.5, 1)})
+    {
         expectSoundVolume(a, light);
+    }
 }
 
 TEST(StressMesh, OutOfRangeIndicesAreDropped)
@@ -152,6 +154,26 @@ TEST(StressMesh, OutOfRangeIndicesAreDropped)
     const MeshAdjacency& a = cache->get(*g)->getAdjacency();
     EXPECT_EQ(a.report.outOfRangeTriangles, 1u);
     EXPECT_EQ(a.faces.size(), 1u);
+}
+
+// A GL_TRIANGLES index list of 5 indices: one triangle, and nothing read past the list
+// (osg::TriangleIndexFunctor alone reads a second triangle beyond it; found by fuzz_mesh_cache).
+TEST(StressMesh, IndexListNotAMultipleOfThreeGivesWholeTrianglesOnly)
+{
+    const osg::ref_ptr<osg::DrawElements> lists[] = {new osg::DrawElementsUByte(GL_TRIANGLES),
+                                                     new osg::DrawElementsUShort(GL_TRIANGLES),
+                                                     new osg::DrawElementsUInt(GL_TRIANGLES)};
+    for (const osg::ref_ptr<osg::DrawElements>& list : lists)
+    {
+        for (unsigned int i : {0, 1, 2, 1, 2}) list->addElement(i);
+        const GLenum type = list->getDataType();
+        osg::ref_ptr<osg::Geometry> g = makeGeometry({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, "five indices");
+        g->setPrimitiveSetList({list.get()});
+        osg::ref_ptr<MeshCache> cache = new MeshCache;
+        const MeshAdjacency& a = cache->get(*g)->getAdjacency();
+        EXPECT_EQ(a.report.inputTriangles, 1u) << type;
+        EXPECT_EQ(a.faces.size(), 1u) << type;
+    }
 }
 
 TEST(StressMesh, GeometryWithoutVerticesGivesAnEmptyMesh)
@@ -173,9 +195,13 @@ TEST(StressExtraction, LightInAFacePlaneMakesThatFaceFaceAway)
         SilhouetteEdges edges;
         SilhouetteExtractor().extract(a, light, edges);
         for (std::size_t f = 0; f < a.faces.size(); ++f)
-            if (a.planes[f].x() * light.x() + a.planes[f].y() * light.y() + a.planes[f].z() * light.z() +
-                    a.planes[f].w() * light.w() == 0.0)
+        {
+            const osg::Vec4d& p = a.planes[f];
+            if (p.x() * light.x() + p.y() * light.y() + p.z() * light.z() + p.w() * light.w() == 0.0)
+            {
                 EXPECT_EQ(edges.lit[f], 0) << "face " << f;
+            }
+        }
         EXPECT_GT(edges.edgeCount(), 0u);
         expectSoundVolume(a, light);
     }

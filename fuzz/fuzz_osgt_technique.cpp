@@ -1,0 +1,76 @@
+// libFuzzer target: the .osgt reader on SilhouetteShadowTechnique's serialized properties.
+//
+// An input that starts with "#Ascii" is read as a whole .osgt file; any other input is the
+// body of a SilhouetteShadowTechnique block inside a ShadowedScene, so that most mutations
+// reach the technique's wrapper (plugins/serializers). Whatever is read is written back as
+// .osgt and read again, and the technique's getters must hold values its setters allow.
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+
+#include <osg/Notify>
+#include <osgDB/ReaderWriter>
+#include <osgDB/Registry>
+#include <osgShadow/ShadowedScene>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+namespace {
+
+osgDB::ReaderWriter* osgt = nullptr;
+osg::ref_ptr<osgDB::Options> options;
+
+osg::ref_ptr<osg::Node> readOsgt(const std::string& text)
+{
+    std::istringstream in(text);
+    osgDB::ReaderWriter::ReadResult result = osgt->readNode(in, options.get());
+    return result.getNode();
+}
+
+void check(const osg::Node* node)
+{
+    const osgShadow::ShadowedScene* scene = dynamic_cast<const osgShadow::ShadowedScene*>(node);
+    if (!scene) return;
+    const auto* t = dynamic_cast<const osgShadowSilhouette::SilhouetteShadowTechnique*>(scene->getShadowTechnique());
+    if (!t) return;
+    // The setters' guarantees (README, Properties).
+    if (t->getShadowMapSize() < 1 || t->getShadowMapSize() > 16384) std::abort();
+    if (!std::isfinite(t->getPolygonOffsetFactor()) || !std::isfinite(t->getPolygonOffsetUnits())) std::abort();
+    if (t->getMaxShadowLights() < 1 || t->getMaxShadowLights() > 8) std::abort();
+    if (!osgShadowSilhouette::SilhouetteShadowTechnique::isModeAvailable(t->getMode()) &&
+        t->getEffectiveMode() != osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_MAP)
+        std::abort();
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+    osg::setNotifyLevel(osg::FATAL); // bad input is reported through osg::notify: keep quiet
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    registry->getLibraryFilePathList().push_front(OSS_FUZZ_PLUGIN_DIR);
+    osgt = registry->getReaderWriterForExtension("osgt");
+    registry->loadLibrary(registry->createLibraryNameForExtension("serializers_osgshadowsilhouette"));
+    if (!osgt) std::abort();
+    options = new osgDB::Options;
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const std::string input(reinterpret_cast<const char*>(data), size);
+    std::string text = input;
+    if (input.compare(0, 6, "#Ascii") != 0)
+        text = "#Ascii Scene\n#Version 161\n#Generator OpenSceneGraph 3.6.5\n\n"
+               "osgShadow::ShadowedScene {\n UniqueID 1\n ShadowTechnique TRUE {\n"
+               "  osgShadowSilhouette::SilhouetteShadowTechnique {\n   UniqueID 2\n" +
+               input + "\n  }\n }\n}\n";
+    osg::ref_ptr<osg::Node> node = readOsgt(text);
+    if (!node) return 0;
+    check(node.get());
+    std::ostringstream out;
+    if (osgt->writeNode(*node, out, options.get()).success()) check(readOsgt(out.str()).get());
+    return 0;
+}
