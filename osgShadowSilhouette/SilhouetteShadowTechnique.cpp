@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <sstream>
 
 namespace osgShadowSilhouette {
@@ -33,19 +34,53 @@ enum WarningKey
     WARN_NO_STENCIL,
 };
 
-/** Culls the shadowed scene's children from a light-space camera that has no children of its own. */
+/** Culls the shadowed scene's children from a light-space camera that has no children of
+ *  its own. With setCasters(false) only the camera's own children (a depth map kept from
+ *  an earlier frame is tested, not redrawn). */
 class TraverseShadowedSceneCallback : public osg::NodeCallback
 {
 public:
     explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
+    void setCasters(bool flag) { _casters = flag; }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
-        if (_scene) _scene->osg::Group::traverse(*nv);
+        if (_scene && _casters) _scene->osg::Group::traverse(*nv);
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
 
 private:
     osgShadow::ShadowedScene* _scene;
+    bool _casters = true;
+};
+
+/** World bounds of the casters and a hash of what a depth pass draws of them: each
+ *  drawable, its world matrix and the versions of its vertex array and primitive sets. */
+class CasterSignatureVisitor : public osg::ComputeBoundsVisitor
+{
+public:
+    std::size_t signature = 0;
+
+    void apply(osg::Drawable& drawable) override
+    {
+        osg::ComputeBoundsVisitor::apply(drawable);
+        mix(std::hash<const void*>()(&drawable));
+        if (!_matrixStack.empty())
+            for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (!geometry) return;
+        if (const osg::Array* vertices = geometry->getVertexArray())
+        {
+            mix(std::hash<const void*>()(vertices));
+            mix(vertices->getModifiedCount());
+        }
+        for (const auto& primitives : geometry->getPrimitiveSetList())
+        {
+            mix(std::hash<const void*>()(primitives.get()));
+            mix(primitives->getModifiedCount());
+        }
+    }
+
+    void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
 };
 
 /** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
@@ -357,6 +392,7 @@ void SilhouetteShadowTechnique::cleanSceneGraph()
 void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
     if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
@@ -379,6 +415,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
 void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
     if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
@@ -547,7 +584,13 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
 {
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
     frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
-    frame.casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
+    CasterSignatureVisitor casters;
+    casters.setTraversalMask(settings->getCastsShadowTraversalMask());
+    for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(casters);
+    casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
+    const osg::BoundingBox& box = casters.getBoundingBox();
+    frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
+    frame.casterSignature = casters.signature;
     frame.region = visibleReceiverRegion(cv, frame.receivers);
     if (frame.mode != SHADOW_MAP)
         frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
@@ -585,14 +628,44 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
         pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
         if (queries) pass.depthCamera->addChild(queries);
     }
-    cullDepthPass(cv, pass);
-    ++stats.shadowPasses;
+    cullLightPasses(cv, pass, frame, light, stats);
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
                                                      osg::StateAttribute::ON);
     if (!silhouette) return;
-    cullSilhouettePass(cv, pass, light, frame.casterList);
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+}
+
+void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightPass& pass, const FrameContext& frame,
+                                                const LightDescription& light, Statistics& stats)
+{
+    PassInputs inputs;
+    inputs.valid = true;
+    inputs.glGeneration = getGLGeneration();
+    inputs.mode = frame.mode;
+    inputs.casters = frame.casterSignature;
+    inputs.view = pass.frustum.view;
+    inputs.projection = pass.frustum.projection;
+    inputs.light = light.homogeneous();
+    const bool silhouette = frame.mode == SILHOUETTE_MAP;
+    const bool reuse = inputs == pass.rendered &&
+                       (!silhouette || (pass.silhouettePass && pass.silhouettePass->getMapSize() == _shadowMapSize));
+    if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
+        scene->setCasters(!reuse);
+    pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
+    if (reuse)
+    {
+        if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(cv, pass); // the blocker queries alone
+        ++stats.depthPassesReused;
+        stats.silhouettePassesReused += silhouette ? 1 : 0;
+        stats.extractionsSkipped += silhouette ? 1 : 0;
+        return;
+    }
+    cullDepthPass(cv, pass);
+    ++stats.shadowPasses;
+    pass.rendered = inputs;
+    if (!silhouette) return;
+    cullSilhouettePass(cv, pass, light, frame.casterList);
     stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
 }
 
@@ -647,6 +720,7 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     stats.zfailCasters = vd.stencil->getZFailCasters();
     stats.zpassCasters = vd.stencil->getZPassCasters();
     stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
+    stats.volumesCulled = vd.stencil->getVolumesCulled();
     stats.silhouettePixels = hybrid ? vd.stencil->getSilhouettePixels() : -1;
     stats.volumeFragments = vd.stencil->getVolumeFragments();
     stats.blockersTested = vd.stencil->getBlockersTested();
