@@ -657,6 +657,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     {
         if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(cv, pass); // the blocker queries alone
         ++stats.depthPassesReused;
+        ++stats.shadowPasses; // in use, kept from an earlier frame
         stats.silhouettePassesReused += silhouette ? 1 : 0;
         stats.extractionsSkipped += silhouette ? 1 : 0;
         return;

@@ -191,6 +191,7 @@ TEST(Skipping, ReleasedGLObjectsAreRenderedAgain)
     r.root->releaseGLObjects(); // as a viewer does when its context goes away
     const ossref::Mask mask = nextMask(r);
     EXPECT_EQ(r.technique->getStatistics().shadowPasses, 1u);
+    EXPECT_EQ(r.technique->getStatistics().depthPassesReused, 0u) << "released maps are rendered again";
     EXPECT_LT(wrongPctAgainstReference(r, mask), boundPct("silhouette"));
 }
 
