@@ -79,6 +79,12 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         }
         o.blockerCulling = culling == "on";
     }
+    if (a.read("--hybrid-method", o.hybridMethod) && o.hybridMethod != "auto" && o.hybridMethod != "stencil" &&
+        o.hybridMethod != "lists")
+    {
+        error = "--hybrid-method takes auto, stencil or lists";
+        return false;
+    }
     if (a.read("--offscreen")) o.offscreen = true;
     for (int i = 1; i < a.argc(); ++i)
     {
@@ -100,7 +106,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--light-dir X Y Z | --light-pos X Y Z]... [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask.png] [--offscreen]\n"
       << "    [--reference ref.png] [--compare ref.png] [--diff diff.png] [--classes classes.png]\n"
-      << "    [--blocker-culling on|off]\n";
+      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists]\n";
     return s.str();
 }
 

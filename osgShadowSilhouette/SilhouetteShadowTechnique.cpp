@@ -5,7 +5,9 @@
 
 #include <osg/ColorMask>
 #include <osg/ComputeBoundsVisitor>
+#include <osg/BufferIndexBinding>
 #include <osg/CullFace>
+#include <osg/GLExtensions>
 #include <osg/Image>
 #include <osg/PolygonOffset>
 #include <osgShadow/ShadowedScene>
@@ -32,6 +34,7 @@ enum WarningKey
     WARN_BAD_LIGHT,
     WARN_MAP_SIZE,
     WARN_NO_STENCIL,
+    WARN_NO_TRIANGLE_LISTS,
 };
 
 /** Culls the shadowed scene's children from a light-space camera that has no children of
@@ -167,7 +170,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _useDefaultShading(copy._useDefaultShading),
       _debugView(copy._debugView),
       _debugLight(copy._debugLight),
-      _blockerCulling(copy._blockerCulling)
+      _blockerCulling(copy._blockerCulling),
+      _hybridMethod(copy._hybridMethod)
 {
 }
 
@@ -288,6 +292,11 @@ void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
     _blockerCulling = flag;
 }
 
+void SilhouetteShadowTechnique::setHybridMethod(HybridMethod method)
+{
+    _hybridMethod = (method >= HYBRID_AUTO && method <= HYBRID_TRIANGLE_LISTS) ? method : HYBRID_AUTO;
+}
+
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
@@ -333,6 +342,9 @@ void SilhouetteShadowTechnique::init()
     _receiverProgram->addShader(_shadowFragmentShader.get());
     _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
     _receiverProgram->addShader(_silhouetteFragmentShader.get());
+    osg::ref_ptr<osg::Shader> listTerm = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
+    _receiverProgram->addShader(listTerm.get());
+    _listStateSet = TriangleListPass::createSharedStateSet();
     _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
     _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
     _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
@@ -343,6 +355,7 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
     _stencilProgram->addShader(_shadowFragmentShader.get());
     _stencilProgram->addShader(_silhouetteFragmentShader.get());
+    _stencilProgram->addShader(listTerm.get());
     _volumeProgram = new osg::Program;
     _volumeProgram->setName("osgShadowSilhouette shadow volumes");
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
@@ -408,6 +421,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
             if (pass.depthCamera) pass.depthCamera->resizeGLObjectBuffers(maxSize);
             if (pass.depthTexture) pass.depthTexture->resizeGLObjectBuffers(maxSize);
             if (pass.silhouettePass) pass.silhouettePass->resizeGLObjectBuffers(maxSize);
+            if (pass.listPass) pass.listPass->resizeGLObjectBuffers(maxSize);
         }
     }
 }
@@ -432,6 +446,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
             if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
             if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
             if (pass.blockers) pass.blockers->releaseGLObjects(state);
+            if (pass.listPass) pass.listPass->releaseGLObjects(state);
         }
     }
 }
@@ -476,8 +491,22 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->lightIndex->setElement(i, i);
         vd->shadowSlot->setElement(i, -1);
     }
+    vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC2, shader::LIST_CAPACITY, _maxShadowLights);
+    vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, _maxShadowLights);
+    osg::ref_ptr<osg::Uniform> listHeads =
+        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_HEADS, _maxShadowLights);
+    osg::ref_ptr<osg::Uniform> listCounts =
+        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_COUNTS, _maxShadowLights);
+    for (unsigned int slot = 0; slot < _maxShadowLights; ++slot)
+    {
+        vd->listCapacity->setElement(slot, 0u, 0u);
+        vd->listPerspective->setElement(slot, 0);
+        listHeads->setElement(slot, int(listUnit(slot)));
+        listCounts->setElement(slot, int(listCountUnit(slot)));
+    }
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
-                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get()})
+                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->listCapacity.get(),
+                            vd->listPerspective.get(), listHeads.get(), listCounts.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
@@ -526,7 +555,12 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
-    const bool stencilMode = frame.mode == SHADOW_VOLUME || frame.mode == HYBRID;
+    frame.triangleLists = frame.mode == HYBRID && useTriangleLists(cv);
+    const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
+    if (frame.triangleLists)
+        vd.receiverStateSet->setDefine(shader::DEFINE_TRIANGLE_LISTS);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_TRIANGLE_LISTS);
     if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
     cullReceivers(cv, vd, stencilMode ? vd.stencil->getBaseStateSet() : nullptr);
 
@@ -536,6 +570,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
     stats.effectiveMode = frame.mode;
+    stats.triangleLists = frame.triangleLists;
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
     else prepareFrame(cv, frame);
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
@@ -619,7 +654,7 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
         return;
     }
     if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
-    const bool blockers = frame.mode == HYBRID && _blockerCulling;
+    const bool blockers = frame.mode == HYBRID && _blockerCulling && !frame.triangleLists;
     if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
     if (blockers) pass.blockers->update(frame.casterList);
     osg::Node* queries = blockers ? pass.blockers->getNode() : nullptr;
@@ -631,6 +666,7 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
     cullLightPasses(cv, pass, frame, light, stats);
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
                                                      osg::StateAttribute::ON);
+    if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (!silhouette) return;
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
@@ -668,6 +704,53 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     if (!silhouette) return;
     cullSilhouettePass(cv, pass, light, frame.casterList);
     stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
+}
+
+bool SilhouetteShadowTechnique::useTriangleLists(osgUtil::CullVisitor& cv) const
+{
+    if (_hybridMethod == HYBRID_STENCIL_VOLUMES) return false;
+    const osg::State* state = cv.getState();
+    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
+    const bool supported = ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier;
+    if (!supported && _hybridMethod == HYBRID_TRIANGLE_LISTS)
+        warnOnce(WARN_NO_TRIANGLE_LISTS, "HybridMethod HYBRID_TRIANGLE_LISTS needs OpenGL 4.3 (shader storage "
+                                         "buffers, image atomics) and the context has less; using HYBRID_STENCIL_VOLUMES");
+    return supported;
+}
+
+void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, ViewData& vd, LightPass& pass,
+                                                     unsigned int slot, const FrameContext& frame,
+                                                     const LightDescription& light)
+{
+    std::size_t triangles = 0;
+    for (const Caster& caster : frame.casterList) triangles += caster.mesh->getAdjacency().report.inputTriangles;
+    const unsigned int grid = TriangleListPass::MAX_GRID_SIZE;
+    if (!pass.listPass || !pass.listPass->fits(grid, triangles))
+    {
+        pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
+                                             "osgShadowSilhouette triangle lists " + std::to_string(slot));
+        pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+        pass.listRendered = PassInputs();
+    }
+    if (!(pass.listRendered == pass.rendered)) // the lists describe another depth map
+    {
+        const unsigned int mask = cv.getTraversalMask();
+        cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
+        pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL);
+        cv.setTraversalMask(mask);
+        pass.listRendered = pass.rendered;
+    }
+    osg::StateSet& ss = *vd.receiverStateSet;
+    ss.setTextureAttributeAndModes(listUnit(slot), pass.listPass->getHeads(), osg::StateAttribute::ON);
+    ss.setTextureAttributeAndModes(listCountUnit(slot), pass.listPass->getCounts(), osg::StateAttribute::ON);
+    const unsigned int binding = shader::LIST_READ_BINDING + slot;
+    auto* bound = dynamic_cast<osg::ShaderStorageBufferBinding*>(
+        ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
+    if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
+        ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
+                                                                    pass.listPass->getBufferSize()));
+    vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity());
+    vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)

@@ -8,7 +8,7 @@
 // Applications link this shader into their own programs and call oss_shadowTerm().
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
-#pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_SILHOUETTE_MAP)
+#pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -29,6 +29,10 @@ uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_LIGHTS];
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_LIGHTS];
 float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
+#ifdef OSS_TRIANGLE_LISTS
+// HYBRID with triangle lists: the term of oss_trilist_term.frag.glsl, linked into the same program.
+float oss_listTerm(int s, float pcf, vec4 eyePosition);
+#endif
 
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
@@ -43,8 +47,10 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 {
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
         if (s == slot)
-#ifdef OSS_SILHOUETTE_MAP
+#if defined(OSS_SILHOUETTE_MAP)
             return oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+#elif defined(OSS_TRIANGLE_LISTS)
+            return oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition), eyePosition);
 #else
             return oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
 #endif
@@ -108,7 +114,11 @@ vec2 oss_shadowSlotClass(int slot, vec4 eyePosition)
             return oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
 #else
             float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+#ifdef OSS_TRIANGLE_LISTS
+            return vec2(step(0.5, oss_listTerm(s, p, eyePosition)), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+#else
             return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+#endif
 #endif
         }
     return vec2(1.0, 0.0);
