@@ -133,6 +133,12 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         }
         o.blockerCulling = culling == "on";
     }
+    if (a.read("--hybrid-method", o.hybridMethod) && o.hybridMethod != "auto" && o.hybridMethod != "stencil" &&
+        o.hybridMethod != "lists")
+    {
+        error = "--hybrid-method takes auto, stencil or lists";
+        return false;
+    }
     if (a.read("--offscreen")) o.offscreen = true;
     for (int i = 1; i < a.argc(); ++i)
     {
@@ -155,7 +161,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
-      << "    [--blocker-culling on|off]\n";
+      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists]\n";
     return s.str();
 }
 

@@ -43,6 +43,7 @@ struct RenderOptions
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
+    std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };

@@ -190,7 +190,7 @@ unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const
 void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, double nearRadius,
                              const osg::BoundingBoxd& receivers, BlockerQueries* blockers)
 {
-    _zfail = _zpass = 0;
+    _zfail = _zpass = _culled = 0;
     _scissorCoverage = 0.0;
     const osg::Viewport* viewport = cv.getViewport();
     const osg::Matrixd worldToClip = *cv.getModelViewMatrix() * *cv.getProjectionMatrix();
@@ -206,10 +206,16 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
         }
         if (e.zfail->getDrawCallback() != e.conditional.get()) e.zfail->setDrawCallback(e.conditional.get());
         if (e.zpass->getDrawCallback() != e.conditional.get()) e.zpass->setDrawCallback(e.conditional.get());
+        const bool drawn = applyScissor(e, receivers, worldToClip, viewport);
+        e.transform->setNodeMask(drawn ? ~0u : 0u);
+        if (!drawn)
+        {
+            ++_culled;
+            continue;
+        }
         const bool zfail = needsZFail(e.worldBound, _light, eye, nearRadius);
         e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
         ++(zfail ? _zfail : _zpass);
-        applyScissor(e, receivers, worldToClip, viewport);
     }
     const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
     cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
@@ -217,7 +223,7 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
     cv.setComputeNearFarMode(mode);
 }
 
-void ShadowVolumeGroup::applyScissor(Entry& e, const osg::BoundingBoxd& receivers, const osg::Matrixd& worldToClip,
+bool ShadowVolumeGroup::applyScissor(Entry& e, const osg::BoundingBoxd& receivers, const osg::Matrixd& worldToClip,
                                      const osg::Viewport* viewport)
 {
     osg::Vec4i rect;
@@ -228,12 +234,14 @@ void ShadowVolumeGroup::applyScissor(Entry& e, const osg::BoundingBoxd& receiver
     {
         e.transform->setStateSet(nullptr);
         if (viewport) _scissorCoverage += 1.0;
-        return;
+        return true;
     }
+    if (rect.z() <= 0 || rect.w() <= 0) return false;
     if (!e.scissor) e.scissor = new osg::Scissor;
     e.scissor->setScissor(rect.x(), rect.y(), rect.z(), rect.w());
     e.transform->getOrCreateStateSet()->setAttributeAndModes(e.scissor.get(), osg::StateAttribute::ON);
     _scissorCoverage += double(rect.z()) * rect.w() / (viewport->width() * viewport->height());
+    return true;
 }
 
 bool volumeScissor(const osg::BoundingBoxd& caster, const osg::Vec4d& light, const osg::BoundingBoxd& receivers,
@@ -460,11 +468,15 @@ StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& ligh
     Slot& s = _slots[light.slot];
     if (!s.volumes || s.lightNum != light.lightNum || s.hybrid != hybrid || s.mask != mask)
     {
+        const bool keepVolumes = s.volumes && s.hybrid == hybrid;
         s.slot = light.slot;
         s.lightNum = light.lightNum;
         s.hybrid = hybrid;
         s.mask = mask;
+        // The volumes depend on the light and the mode only: a debug view keeps them.
+        const osg::ref_ptr<ShadowVolumeGroup> volumes = keepVolumes ? s.volumes : nullptr;
         build(s);
+        if (volumes) s.volumes = volumes;
     }
     return s;
 }
@@ -473,7 +485,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
                                const std::vector<StencilLight>& lights, const std::vector<Caster>& casters,
                                const osg::BoundingBoxd& receivers, const CullReceivers& cullReceivers)
 {
-    _zfail = _zpass = _rebuilt = 0;
+    _zfail = _zpass = _rebuilt = _culled = 0;
     _silhouettePixels = _volumeFragments = -1;
     _blockersHidden = _blockersTested = 0;
     const auto add = [](long long& sum, long long value) {
@@ -512,6 +524,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         }
         _zfail += s.volumes->getZFailCount();
         _zpass += s.volumes->getZPassCount();
+        _culled += s.volumes->getCulledCount();
 
         cullReceivers(s.litState.get());
         if (s.hybrid) cullReceivers(s.litShadowMapState.get());

@@ -5,7 +5,9 @@
 
 #include <osg/ColorMask>
 #include <osg/ComputeBoundsVisitor>
+#include <osg/BufferIndexBinding>
 #include <osg/CullFace>
+#include <osg/GLExtensions>
 #include <osg/Image>
 #include <osg/PolygonOffset>
 #include <osgShadow/ShadowedScene>
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <sstream>
 
 namespace osgShadowSilhouette {
@@ -32,21 +35,57 @@ enum WarningKey
     WARN_MAP_SIZE,
     WARN_NO_STENCIL,
     WARN_FACE_SLOTS,
+    WARN_NO_TRIANGLE_LISTS,
+    WARN_LIST_SLOTS,
 };
 
-/** Culls the shadowed scene's children from a light-space camera that has no children of its own. */
+/** Culls the shadowed scene's children from a light-space camera that has no children of
+ *  its own. With setCasters(false) only the camera's own children (a depth map kept from
+ *  an earlier frame is tested, not redrawn). */
 class TraverseShadowedSceneCallback : public osg::NodeCallback
 {
 public:
     explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
+    void setCasters(bool flag) { _casters = flag; }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
-        if (_scene) _scene->osg::Group::traverse(*nv);
+        if (_scene && _casters) _scene->osg::Group::traverse(*nv);
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
 
 private:
     osgShadow::ShadowedScene* _scene;
+    bool _casters = true;
+};
+
+/** World bounds of the casters and a hash of what a depth pass draws of them: each
+ *  drawable, its world matrix and the versions of its vertex array and primitive sets. */
+class CasterSignatureVisitor : public osg::ComputeBoundsVisitor
+{
+public:
+    std::size_t signature = 0;
+
+    void apply(osg::Drawable& drawable) override
+    {
+        osg::ComputeBoundsVisitor::apply(drawable);
+        mix(std::hash<const void*>()(&drawable));
+        if (!_matrixStack.empty())
+            for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (!geometry) return;
+        if (const osg::Array* vertices = geometry->getVertexArray())
+        {
+            mix(std::hash<const void*>()(vertices));
+            mix(vertices->getModifiedCount());
+        }
+        for (const auto& primitives : geometry->getPrimitiveSetList())
+        {
+            mix(std::hash<const void*>()(primitives.get()));
+            mix(primitives->getModifiedCount());
+        }
+    }
+
+    void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
 };
 
 /** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
@@ -133,7 +172,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _useDefaultShading(copy._useDefaultShading),
       _debugView(copy._debugView),
       _debugLight(copy._debugLight),
-      _blockerCulling(copy._blockerCulling)
+      _blockerCulling(copy._blockerCulling),
+      _hybridMethod(copy._hybridMethod)
 {
 }
 
@@ -254,6 +294,11 @@ void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
     _blockerCulling = flag;
 }
 
+void SilhouetteShadowTechnique::setHybridMethod(HybridMethod method)
+{
+    _hybridMethod = (method >= HYBRID_AUTO && method <= HYBRID_TRIANGLE_LISTS) ? method : HYBRID_AUTO;
+}
+
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
@@ -299,6 +344,9 @@ void SilhouetteShadowTechnique::init()
     _receiverProgram->addShader(_shadowFragmentShader.get());
     _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
     _receiverProgram->addShader(_silhouetteFragmentShader.get());
+    osg::ref_ptr<osg::Shader> listTerm = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
+    _receiverProgram->addShader(listTerm.get());
+    _listStateSet = TriangleListPass::createSharedStateSet();
     _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
     _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
     _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
@@ -309,6 +357,7 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
     _stencilProgram->addShader(_shadowFragmentShader.get());
     _stencilProgram->addShader(_silhouetteFragmentShader.get());
+    _stencilProgram->addShader(listTerm.get());
     _volumeProgram = new osg::Program;
     _volumeProgram->setName("osgShadowSilhouette shadow volumes");
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
@@ -358,6 +407,7 @@ void SilhouetteShadowTechnique::cleanSceneGraph()
 void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
     if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
@@ -373,6 +423,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
             if (pass.depthCamera) pass.depthCamera->resizeGLObjectBuffers(maxSize);
             if (pass.depthTexture) pass.depthTexture->resizeGLObjectBuffers(maxSize);
             if (pass.silhouettePass) pass.silhouettePass->resizeGLObjectBuffers(maxSize);
+            if (pass.listPass) pass.listPass->resizeGLObjectBuffers(maxSize);
         }
     }
 }
@@ -380,6 +431,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
 void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
+    ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
     if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
@@ -396,6 +448,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
             if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
             if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
             if (pass.blockers) pass.blockers->releaseGLObjects(state);
+            if (pass.listPass) pass.listPass->releaseGLObjects(state);
         }
     }
 }
@@ -416,6 +469,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     osg::ref_ptr<ViewData> vd = new ViewData;
     osg::StateSet* ss = new osg::StateSet;
     vd->receiverStateSet = ss;
+    vd->receiverPassStateSet = new osg::StateSet;
     if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
     const unsigned int slots = slotCapacity();
     ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
@@ -444,9 +498,25 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->lightIndex->setElement(i, i);
         vd->shadowSlot->setElement(i, -1);
     }
+    const unsigned int listSlotCount = std::max(1u, listSlots());
+    ss->setDefine(shader::DEFINE_MAX_LIST_SLOTS, std::to_string(listSlotCount));
+    vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC2, shader::LIST_CAPACITY, listSlotCount);
+    vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, listSlotCount);
+    osg::ref_ptr<osg::Uniform> listHeads =
+        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_HEADS, listSlotCount);
+    osg::ref_ptr<osg::Uniform> listCounts =
+        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_COUNTS, listSlotCount);
+    for (unsigned int slot = 0; slot < listSlotCount; ++slot)
+    {
+        vd->listCapacity->setElement(slot, 0u, 0u);
+        vd->listPerspective->setElement(slot, 0);
+        listHeads->setElement(slot, int(listUnit(slot)));
+        listCounts->setElement(slot, int(listCountUnit(slot)));
+    }
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
                             vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
-                            vd->slotCore.get()})
+                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), listHeads.get(),
+                            listCounts.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
@@ -496,9 +566,9 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
-    const bool stencilMode = frame.mode == SHADOW_VOLUME || frame.mode == HYBRID;
-    if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
-    cullReceivers(cv, vd, stencilMode ? vd.stencil->getBaseStateSet() : nullptr);
+    // The receivers are culled first: a LightSource among them is known only afterwards. Their
+    // pass state set gets the stencil modes' lighting program once the method is known.
+    cullReceivers(cv, vd, vd.receiverPassStateSet.get());
 
     const std::vector<FoundLight> lights = collectLights(cv);
     Statistics stats;
@@ -517,6 +587,36 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     const std::vector<int> slots = assignShadowSlots(lights, reaches);
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
+    // Each light's frusta; cube faces of point lights take the slots after the lights' own.
+    unsigned int nextFreeSlot = 0;
+    for (int slot : slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
+    std::vector<std::vector<LightFrustum>> frusta(lights.size());
+    std::vector<unsigned int> firstFaceSlot(lights.size(), 0);
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (slots[i] >= 0)
+            firstFaceSlot[i] = nextFreeSlot, frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
+                                        static_cast<unsigned int>(vd.passes.size()));
+    frame.triangleLists = frame.mode == HYBRID && useTriangleLists(cv);
+    if (frame.triangleLists && nextFreeSlot > listSlots())
+    {
+        warnOnce(WARN_LIST_SLOTS, "HYBRID: this frame's " + std::to_string(nextFreeSlot) +
+                                      " shadow maps (cube faces included) exceed the " + std::to_string(listSlots()) +
+                                      " that triangle lists hold (BaseTextureUnit); using HYBRID_STENCIL_VOLUMES");
+        frame.triangleLists = false;
+    }
+    stats.triangleLists = frame.triangleLists;
+    const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
+    if (frame.triangleLists)
+        vd.receiverStateSet->setDefine(shader::DEFINE_TRIANGLE_LISTS);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_TRIANGLE_LISTS);
+    if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
+    if (stencilMode)
+        vd.receiverPassStateSet->setAttributeAndModes(_stencilProgram.get(),
+                                                      osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    else
+        vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
+
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     const unsigned int capacity = slotCapacity();
     std::vector<osg::Texture2D*> silhouetteMaps(capacity, _defaultSilhouetteTexture.get());
@@ -528,17 +628,16 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
     }
-    // Cube faces of point lights take the slots after the lights' own.
-    unsigned int nextFreeSlot = 0;
-    for (int slot : slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
+    // HYBRID's lists are bound in the silhouette maps' units, which it does not otherwise use.
+    if (!frame.triangleLists) bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (slots[i] < 0) continue;
         ++stats.lightsShadowed;
-        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), nextFreeSlot,
-                  silhouetteMaps, stats);
+        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), frusta[i],
+                  firstFaceSlot[i], silhouetteMaps, stats);
     }
-    bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
+    if (silhouette) bindSilhouetteMaps(vd, silhouetteMaps);
 
     if (stencilMode)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
@@ -554,6 +653,12 @@ unsigned int SilhouetteShadowTechnique::slotCapacity() const
     // 32 image units of a fragment stage; never fewer than the light budget.
     const unsigned int units = _baseTextureUnit < 32 ? (32 - _baseTextureUnit) / 2 : 0;
     return std::max(_maxShadowLights, std::min<unsigned int>(shader::MAX_SHADOW_SLOTS, units));
+}
+
+unsigned int SilhouetteShadowTechnique::listSlots() const
+{
+    // Heads and counts of slot s sit in the silhouette units of slots s and listSlots() + s.
+    return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity() / 2);
 }
 
 bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
@@ -584,33 +689,48 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
 {
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
     frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
-    frame.casters = boundsOf(*_shadowedScene, settings->getCastsShadowTraversalMask());
+    CasterSignatureVisitor casters;
+    casters.setTraversalMask(settings->getCastsShadowTraversalMask());
+    for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(casters);
+    casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
+    const osg::BoundingBox& box = casters.getBoundingBox();
+    frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
+    frame.casterSignature = casters.signature;
     frame.region = visibleReceiverRegion(cv, frame.receivers);
     if (frame.mode != SHADOW_MAP)
         frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
                                           *_meshCache);
 }
 
-void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
-                                          const LightDescription& light, unsigned int slot,
-                                          unsigned int& nextFreeSlot, std::vector<osg::Texture2D*>& silhouetteMaps,
-                                          Statistics& stats)
+std::vector<LightFrustum> SilhouetteShadowTechnique::planLightFrusta(const FrameContext& frame,
+                                                                     const LightDescription& light,
+                                                                     unsigned int& nextFreeSlot,
+                                                                     unsigned int slotLimit) const
 {
     std::vector<LightFrustum> frusta;
     if (frame.mode != SHADOW_VOLUME && light.type == LightDescription::POINT && needsCubeFaces(light, frame.region))
     {
         frusta = fitCubeFaces(light, frame.region, frame.casters, _shadowMapSize);
-        if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > vd.passes.size())
+        if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > slotLimit)
         {
             warnOnce(WARN_FACE_SLOTS, "light " + std::to_string(light.lightNum) + " needs " +
                                           std::to_string(frusta.size()) + " cube faces and only " +
-                                          std::to_string(vd.passes.size() - nextFreeSlot + 1) + " of the " +
-                                          std::to_string(vd.passes.size()) +
+                                          std::to_string(slotLimit - nextFreeSlot + 1) + " of the " +
+                                          std::to_string(slotLimit) +
                                           " shadow slots are free; it gets one perspective map (see BaseTextureUnit)");
             frusta.clear();
         }
     }
     if (frusta.empty()) frusta.push_back(fitLightFrustum(light, frame.region, frame.casters));
+    if (frusta.size() > 1) nextFreeSlot += static_cast<unsigned int>(frusta.size() - 1);
+    return frusta;
+}
+
+void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
+                                          const LightDescription& light, unsigned int slot,
+                                          const std::vector<LightFrustum>& frusta, unsigned int firstFaceSlot,
+                                          std::vector<osg::Texture2D*>& silhouetteMaps, Statistics& stats)
+{
     if (!frusta.front().valid)
     {
         vd.passes[slot].frustum = LightFrustum();
@@ -619,7 +739,7 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
     }
     for (std::size_t k = 0; k < frusta.size(); ++k)
     {
-        const unsigned int s = k == 0 ? slot : nextFreeSlot++;
+        const unsigned int s = k == 0 ? slot : firstFaceSlot + static_cast<unsigned int>(k - 1);
         vd.slotOwner->setElement(s, int(slot));
         vd.slotCore->setElement(s, float(frusta[k].faceCore));
         cullSlot(cv, vd, frame, light, s, frusta[k], silhouetteMaps[s], stats);
@@ -645,8 +765,8 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
     vd.slotInUse[slot] = true;
     // Blocker culling tests casters against this map alone: not for a cube face, which sees
-    // only part of the light's casters.
-    const bool blockers = frame.mode == HYBRID && _blockerCulling && frustum.faceCore == 0.0;
+    // only part of the light's casters; triangle lists need no volumes to skip.
+    const bool blockers = frame.mode == HYBRID && _blockerCulling && !frame.triangleLists && frustum.faceCore == 0.0;
     if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
     if (!blockers) pass.blockers = nullptr;
     if (blockers) pass.blockers->update(frame.casterList);
@@ -656,15 +776,94 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
         pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
         if (queries) pass.depthCamera->addChild(queries);
     }
-    cullDepthPass(cv, pass);
-    ++stats.shadowPasses;
+    cullLightPasses(cv, pass, frame, light, stats);
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
                                                      osg::StateAttribute::ON);
+    if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (!silhouette) return;
-    cullSilhouettePass(cv, pass, light, frame.casterList);
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+}
+
+void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightPass& pass, const FrameContext& frame,
+                                                const LightDescription& light, Statistics& stats)
+{
+    PassInputs inputs;
+    inputs.valid = true;
+    inputs.glGeneration = getGLGeneration();
+    inputs.mode = frame.mode;
+    inputs.casters = frame.casterSignature;
+    inputs.view = pass.frustum.view;
+    inputs.projection = pass.frustum.projection;
+    inputs.light = light.homogeneous();
+    const bool silhouette = frame.mode == SILHOUETTE_MAP;
+    const bool reuse = inputs == pass.rendered &&
+                       (!silhouette || (pass.silhouettePass && pass.silhouettePass->getMapSize() == _shadowMapSize));
+    if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
+        scene->setCasters(!reuse);
+    pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
+    if (reuse)
+    {
+        if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(cv, pass); // the blocker queries alone
+        ++stats.depthPassesReused;
+        ++stats.shadowPasses; // in use, kept from an earlier frame
+        stats.silhouettePassesReused += silhouette ? 1 : 0;
+        stats.extractionsSkipped += silhouette ? 1 : 0;
+        return;
+    }
+    cullDepthPass(cv, pass);
+    ++stats.shadowPasses;
+    pass.rendered = inputs;
+    if (!silhouette) return;
+    cullSilhouettePass(cv, pass, light, frame.casterList);
     stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
+}
+
+bool SilhouetteShadowTechnique::useTriangleLists(osgUtil::CullVisitor& cv) const
+{
+    if (_hybridMethod == HYBRID_STENCIL_VOLUMES) return false;
+    const osg::State* state = cv.getState();
+    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
+    const bool supported = ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier;
+    if (!supported && _hybridMethod == HYBRID_TRIANGLE_LISTS)
+        warnOnce(WARN_NO_TRIANGLE_LISTS, "HybridMethod HYBRID_TRIANGLE_LISTS needs OpenGL 4.3 (shader storage "
+                                         "buffers, image atomics) and the context has less; using HYBRID_STENCIL_VOLUMES");
+    return supported;
+}
+
+void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, ViewData& vd, LightPass& pass,
+                                                     unsigned int slot, const FrameContext& frame,
+                                                     const LightDescription& light)
+{
+    std::size_t triangles = 0;
+    for (const Caster& caster : frame.casterList) triangles += caster.mesh->getAdjacency().report.inputTriangles;
+    const unsigned int grid = TriangleListPass::MAX_GRID_SIZE;
+    if (!pass.listPass || !pass.listPass->fits(grid, triangles))
+    {
+        pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
+                                             "osgShadowSilhouette triangle lists " + std::to_string(slot));
+        pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+        pass.listRendered = PassInputs();
+    }
+    if (!(pass.listRendered == pass.rendered)) // the lists describe another depth map
+    {
+        const unsigned int mask = cv.getTraversalMask();
+        cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
+        pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL);
+        cv.setTraversalMask(mask);
+        pass.listRendered = pass.rendered;
+    }
+    osg::StateSet& ss = *vd.receiverStateSet;
+    ss.setTextureAttributeAndModes(listUnit(slot), pass.listPass->getHeads(), osg::StateAttribute::ON);
+    ss.setTextureAttributeAndModes(listCountUnit(slot), pass.listPass->getCounts(), osg::StateAttribute::ON);
+    const unsigned int binding = shader::LIST_READ_BINDING + slot;
+    auto* bound = dynamic_cast<osg::ShaderStorageBufferBinding*>(
+        ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
+    if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
+        ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
+                                                                    pass.listPass->getBufferSize()));
+    vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity());
+    vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
@@ -718,6 +917,7 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     stats.zfailCasters = vd.stencil->getZFailCasters();
     stats.zpassCasters = vd.stencil->getZPassCasters();
     stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
+    stats.volumesCulled = vd.stencil->getVolumesCulled();
     stats.silhouettePixels = hybrid ? vd.stencil->getSilhouettePixels() : -1;
     stats.volumeFragments = vd.stencil->getVolumeFragments();
     stats.blockersTested = vd.stencil->getBlockersTested();

@@ -102,8 +102,14 @@ int main(int argc, char** argv)
         std::cerr << "osgsilhouetteshadow: " << error << "\n" << osshar::renderOptionsUsage(arguments.getApplicationName());
         return 1;
     }
-    if (technique) technique->setBlockerCulling(options.blockerCulling);
-    if (technique && options.maxShadowLights > 0) technique->setMaxShadowLights(options.maxShadowLights);
+    if (technique)
+    {
+        technique->setBlockerCulling(options.blockerCulling);
+        technique->setHybridMethod(options.hybridMethod == "lists"     ? SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS
+                                   : options.hybridMethod == "stencil" ? SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES
+                                                                       : SilhouetteShadowTechnique::HYBRID_AUTO);
+        if (options.maxShadowLights > 0) technique->setMaxShadowLights(options.maxShadowLights);
+    }
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
     const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||
                        !options.classes.empty();
@@ -129,9 +135,9 @@ int main(int argc, char** argv)
                     s.lightsFound, s.lightsShadowed, s.shadowPasses, s.silhouetteEdges, s.zfailCasters, s.zpassCasters,
                     s.volumesRebuilt, s.extractionsSkipped);
         std::printf("viewport_pixels=%u silhouette_pixels=%lld volume_fragments=%lld volume_overdraw=%.3f "
-                    "blockers_tested=%u blockers_skipped=%u\n",
+                    "blockers_tested=%u blockers_skipped=%u triangle_lists=%d\n",
                     s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
-                    s.blockersSkipped);
+                    s.blockersSkipped, s.triangleLists ? 1 : 0);
     }
 
     if (!options.classes.empty() && technique)

@@ -9,7 +9,7 @@
 // it writes the class colours of that light (oss_classColor()).
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
-#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -50,6 +50,10 @@ uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
 float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 vec4 oss_silhouetteDebug(vec4 eyePosition);
 #define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
+#elif defined(OSS_TRIANGLE_LISTS)
+// HYBRID with triangle lists: oss_listTerm() (oss_trilist_term.frag.glsl).
+float oss_listTerm(int s, float pcf, vec4 eyePosition);
+#define OSS_SLOT_TERM(s) oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition), oss_eyePosition)
 #else
 #define OSS_SLOT_TERM(s) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #endif

@@ -9,6 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
+#pragma import_defines(OSS_TRIANGLE_LISTS)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -35,6 +36,10 @@ uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
 float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
+#ifdef OSS_TRIANGLE_LISTS
+// HYBRID with triangle lists: the term of oss_trilist_term.frag.glsl, linked into the same program.
+float oss_listTerm(int s, float pcf, vec4 eyePosition);
+#endif
 
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
@@ -43,10 +48,13 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
     return c.w <= 0.0 ? 1.0 : textureProj(map, c); // behind a perspective light: outside its map
 }
 
-#ifdef OSS_SILHOUETTE_MAP
+#define OSS_PCF_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)
+#if defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#elif defined(OSS_TRIANGLE_LISTS)
+#define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p)
 #else
-#define OSS_MAP_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)
+#define OSS_MAP_TERM(s, p) OSS_PCF_TERM(s, p)
 #endif
 
 #ifdef OSS_CUBE_FACES
@@ -85,11 +93,22 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 }
 
 #ifndef OSS_SILHOUETTE_MAP
-// The 2x2 PCF of the light of shadow slot `slot` (the stencil passes of HYBRID): its own
+// The 2x2 PCF of the light of shadow slot `slot` (HYBRID's mask and light passes): its own
 // map's, or the product of its cube faces'.
 float oss_lightPcf(int slot, vec4 eyePosition)
 {
-    return oss_shadowSlotTerm(slot, eyePosition);
+#ifdef OSS_CUBE_FACES
+    float term = 1.0;
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (oss_slotOwner[s] == slot)
+            term *= oss_faceGate(s, eyePosition, OSS_PCF_TERM(s, eyePosition));
+    return term;
+#else
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (s == slot)
+            return OSS_PCF_TERM(s, eyePosition);
+    return 1.0;
+#endif
 }
 #endif
 
@@ -150,7 +169,11 @@ vec2 oss_shadowSlotClass(int slot, vec4 eyePosition)
             return oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
 #else
             float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+#ifdef OSS_TRIANGLE_LISTS
+            return vec2(step(0.5, oss_listTerm(s, p, eyePosition)), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+#else
             return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+#endif
 #endif
         }
     return vec2(1.0, 0.0);

@@ -45,4 +45,10 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
 
     OSS_ADD_PROPERTY(unsigned int, DebugLight, 0u);
     OSS_ADD_PROPERTY(bool, BlockerCulling, true);
+
+    OSS_BEGIN_ENUM_PROPERTY(HybridMethod, HYBRID_AUTO);
+        ADD_ENUM_VALUE(HYBRID_AUTO);
+        ADD_ENUM_VALUE(HYBRID_STENCIL_VOLUMES);
+        ADD_ENUM_VALUE(HYBRID_TRIANGLE_LISTS);
+    END_ENUM_SERIALIZER();
 }

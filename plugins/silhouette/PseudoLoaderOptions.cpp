@@ -109,6 +109,16 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
         else if (k == "polygonoffsetfactor") t.setPolygonOffsetFactor(f);
         else t.setPolygonOffsetUnits(f);
     }
+    else if (k == "hybridmethod")
+    {
+        const std::string m = lower(value);
+        if (m == "auto" || m == "hybrid_auto") t.setHybridMethod(SilhouetteShadowTechnique::HYBRID_AUTO);
+        else if (m == "stencil" || m == "hybrid_stencil_volumes")
+            t.setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+        else if (m == "lists" || m == "hybrid_triangle_lists")
+            t.setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+        else warnValue(key, value, "is not auto, stencil or lists; ignored");
+    }
     else if (k == "usedefaultshading" || k == "blockerculling")
     {
         bool flag = true;
@@ -138,6 +148,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"PolygonOffsetUnits=<f>", "Constant depth bias"},
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
+        {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

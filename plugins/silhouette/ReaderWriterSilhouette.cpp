@@ -94,6 +94,7 @@ public:
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
         _file << "frame=" << s.frameNumber << " lightsFound=" << s.lightsFound
               << " lightsShadowed=" << s.lightsShadowed << " shadowPasses=" << s.shadowPasses
+              << " depthPassesReused=" << s.depthPassesReused
               << " lightsSkipped=" << s.lightsSkipped
               << " effectiveMode=" << SilhouetteShadowTechnique::modeName(s.effectiveMode) << std::endl;
     }

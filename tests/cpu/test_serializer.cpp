@@ -154,7 +154,7 @@ TEST(Serializer, EveryEnumValueOfTheHeaderHasAName)
             EXPECT_TRUE(lookup->getStringToValue().count((*it)[1].str()))
                 << serializer->getName() << "::" << (*it)[1].str() << " has no ADD_ENUM_VALUE";
     }
-    EXPECT_EQ(enums, 2); // Mode, DebugView
+    EXPECT_EQ(enums, 3); // Mode, DebugView, HybridMethod
 }
 
 class RoundTrip : public ::testing::TestWithParam<std::tuple<std::string, size_t>>

@@ -52,6 +52,7 @@ inline const std::vector<PropertyRow>& propertyRows()
         OSS_PROPERTY_ROW(DebugView, Technique::DEBUG_SHADOW_MASK),
         OSS_PROPERTY_ROW(DebugLight, 2u),
         OSS_PROPERTY_ROW(BlockerCulling, false),
+        OSS_PROPERTY_ROW(HybridMethod, Technique::HYBRID_TRIANGLE_LISTS),
     };
     return rows;
 }

@@ -1,0 +1,71 @@
+#version 430 compatibility
+// osgShadowSilhouette: triangle-list pass, geometry stage.
+//
+// Stores each caster triangle once in the light's list buffer (texture-space x, y and a
+// depth that is linear across the projected triangle) and covers its bounding box, grown by
+// half a texel, with a quad: every texel the triangle touches gets a fragment, and the
+// fragment stage keeps exactly those (conservative rasterization, as in irregular
+// z-buffers). Triangles reaching behind a perspective light's eye plane are not listed.
+//
+// List buffer layout (uints): [0] node count, [1] triangle count, [2, 3] unused, then
+// nodeCapacity (even) nodes of (triangle, next), then triangleCapacity triangles of three
+// vec4 (x0 y0 x1 y1) (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for
+// a perspective one (both grow away from the light and are linear in texture-space x, y).
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+layout(std430, binding = 0) buffer OssList { uint oss_list[]; };
+uniform uint oss_listNodeCapacity;
+uniform uint oss_listTriangleCapacity;
+uniform vec2 oss_listGridSize;
+uniform bool oss_listPerspective; // the light's projection
+
+flat out uint oss_triangle;
+flat out vec2 oss_v0, oss_v1, oss_v2; // texture space
+
+void main()
+{
+    vec4 c0 = gl_in[0].gl_Position, c1 = gl_in[1].gl_Position, c2 = gl_in[2].gl_Position;
+    if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0)
+        return;
+    vec3 t0 = c0.xyz / c0.w * 0.5 + 0.5, t1 = c1.xyz / c1.w * 0.5 + 0.5, t2 = c2.xyz / c2.w * 0.5 + 0.5;
+    vec2 lo = min(min(t0.xy, t1.xy), t2.xy), hi = max(max(t0.xy, t1.xy), t2.xy);
+    if (any(greaterThan(lo, vec2(1.0))) || any(lessThan(hi, vec2(0.0))))
+        return; // outside the map
+    vec2 e1 = t1.xy - t0.xy, e2 = t2.xy - t0.xy;
+    if (e1.x * e2.y - e1.y * e2.x == 0.0)
+        return; // edge-on to the light: blocks no ray of positive measure
+    uint index = atomicAdd(oss_list[1], 1u);
+    if (index >= oss_listTriangleCapacity)
+        return; // overflow: the eye pass sees the count and falls back to the shadow map
+    bool ortho = !oss_listPerspective;
+    uint base = 4u + 2u * oss_listNodeCapacity + 12u * index;
+    oss_list[base + 0u] = floatBitsToUint(t0.x);
+    oss_list[base + 1u] = floatBitsToUint(t0.y);
+    oss_list[base + 2u] = floatBitsToUint(t1.x);
+    oss_list[base + 3u] = floatBitsToUint(t1.y);
+    oss_list[base + 4u] = floatBitsToUint(t2.x);
+    oss_list[base + 5u] = floatBitsToUint(t2.y);
+    oss_list[base + 6u] = floatBitsToUint(ortho ? t0.z : -1.0 / c0.w);
+    oss_list[base + 7u] = floatBitsToUint(ortho ? t1.z : -1.0 / c1.w);
+    oss_list[base + 8u] = floatBitsToUint(ortho ? t2.z : -1.0 / c2.w);
+    oss_list[base + 9u] = 0u;
+    oss_list[base + 10u] = 0u;
+    oss_list[base + 11u] = 0u;
+
+    vec2 margin = 0.5 / oss_listGridSize + 1e-6;
+    lo = clamp(lo - margin, vec2(0.0), vec2(1.0)) * 2.0 - 1.0;
+    hi = clamp(hi + margin, vec2(0.0), vec2(1.0)) * 2.0 - 1.0;
+    vec2 corners[4] = vec2[4](vec2(lo.x, lo.y), vec2(hi.x, lo.y), vec2(lo.x, hi.y), vec2(hi.x, hi.y));
+    for (int i = 0; i < 4; ++i)
+    {
+        oss_triangle = index;
+        oss_v0 = t0.xy;
+        oss_v1 = t1.xy;
+        oss_v2 = t2.xy;
+        gl_Position = vec4(corners[i], 0.0, 1.0);
+        EmitVertex();
+    }
+    EndPrimitive();
+}
