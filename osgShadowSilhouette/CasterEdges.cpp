@@ -31,6 +31,7 @@ void CasterCollector::apply(osg::Camera&)
 
 void CasterCollector::apply(osg::Geometry& geometry)
 {
+    if (!_cache.hasFiniteVertices(geometry)) return; // casts no shadow at all (the technique warns)
     osg::ref_ptr<const CachedMesh> mesh = _cache.get(geometry);
     if (!mesh || mesh->getAdjacency().empty()) return;
     Caster caster;

@@ -60,7 +60,10 @@ public:
         else
             _counter->end(info);
     }
-    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(-1, -1, -1, 1, 1, 1); }
+    // No bounds: a state change, not geometry. A box (around the origin of the frame it is
+    // drawn in) would take part in the view's near/far computation and, with the scene far
+    // from the origin, push the near plane past it. Culling is off for it.
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(); }
 
 private:
     osg::ref_ptr<GpuCounter> _counter;

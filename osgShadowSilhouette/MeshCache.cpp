@@ -8,6 +8,9 @@
 
 #include <OpenThreads/ScopedLock>
 
+#include <algorithm>
+#include <cmath>
+
 namespace osgShadowSilhouette {
 
 typedef OpenThreads::ScopedLock<OpenThreads::Mutex> Lock;
@@ -106,10 +109,53 @@ bool MeshCache::getKeepHalfEdgeMesh() const
     return _keepHalfEdgeMesh;
 }
 
+namespace {
+
+/** Whether every float or double component of @p array is finite (other types: true). */
+bool allComponentsFinite(const osg::Array& array)
+{
+    const std::size_t bytes = array.getTotalDataSize();
+    if (array.getDataType() == GL_FLOAT)
+    {
+        const float* f = static_cast<const float*>(array.getDataPointer());
+        return std::all_of(f, f + bytes / sizeof(float), [](float x) { return std::isfinite(x); });
+    }
+    if (array.getDataType() == GL_DOUBLE)
+    {
+        const double* d = static_cast<const double*>(array.getDataPointer());
+        return std::all_of(d, d + bytes / sizeof(double), [](double x) { return std::isfinite(x); });
+    }
+    return true;
+}
+
+} // namespace
+
+bool MeshCache::hasFiniteVertices(const osg::Geometry& geometry)
+{
+    const osg::Array* vertices = geometry.getVertexArray();
+    if (!vertices || vertices->getNumElements() == 0) return true;
+    {
+        Lock lock(_mutex);
+        auto it = _finite.find(&geometry);
+        if (it != _finite.end() && it->second.geometry.get() == &geometry && it->second.vertices == vertices &&
+            it->second.verticesModified == vertices->getModifiedCount())
+            return it->second.finite;
+    }
+    FiniteEntry entry;
+    entry.geometry = &geometry;
+    entry.vertices = vertices;
+    entry.verticesModified = vertices->getModifiedCount();
+    entry.finite = allComponentsFinite(*vertices); // outside the lock
+    Lock lock(_mutex);
+    _finite[&geometry] = entry;
+    return entry.finite;
+}
+
 void MeshCache::remove(const osg::Geometry* geometry)
 {
     Lock lock(_mutex);
     _entries.erase(geometry);
+    _finite.erase(geometry);
 }
 
 void MeshCache::prune()
@@ -120,12 +166,18 @@ void MeshCache::prune()
         if (it->second.geometry.valid()) ++it;
         else it = _entries.erase(it);
     }
+    for (auto it = _finite.begin(); it != _finite.end();)
+    {
+        if (it->second.geometry.valid()) ++it;
+        else it = _finite.erase(it);
+    }
 }
 
 void MeshCache::clear()
 {
     Lock lock(_mutex);
     _entries.clear();
+    _finite.clear();
 }
 
 std::size_t MeshCache::size() const

@@ -37,7 +37,10 @@ public:
         glClearStencil(0);
         glClear(GL_STENCIL_BUFFER_BIT);
     }
-    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(-1, -1, -1, 1, 1, 1); }
+    // No bounds: a state change, not geometry. A box (around the origin of the frame it is
+    // drawn in) would take part in the view's near/far computation and, with the scene far
+    // from the origin, push the near plane past it. Culling is off for it.
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(); }
 };
 
 osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawElementsUInt* indices,

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <sstream>
 
 namespace osgShadowSilhouette {
@@ -37,37 +38,84 @@ enum WarningKey
     WARN_FACE_SLOTS,
     WARN_NO_TRIANGLE_LISTS,
     WARN_LIST_SLOTS,
+    WARN_CONTEXT_MAP_SIZE,
 };
 
-/** Culls the shadowed scene's children from a light-space camera that has no children of
- *  its own. With setCasters(false) only the camera's own children (a depth map kept from
- *  an earlier frame is tested, not redrawn). */
+/** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
+void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables)
+{
+    for (osgUtil::StateGraph* graph : bin.getStateGraphList())
+    {
+        auto& leaves = graph->_leaves;
+        leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
+                                    [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
+                                        return std::find(drawables.begin(), drawables.end(), leaf->getDrawable()) !=
+                                               drawables.end();
+                                    }),
+                     leaves.end());
+    }
+    for (auto& nested : bin.getRenderBinList()) removeLeaves(*nested.second, drawables);
+}
+
+/** The cull callback of a light-space camera (depth pass, triangle lists): culls the
+ *  shadowed scene's casters into the camera's own render stage, leaving out the geometry
+ *  with non-finite vertices, then the camera's own children. With setCasters(false) only
+ *  the camera's own children (a depth map kept from an earlier frame is tested, not redrawn). */
 class TraverseShadowedSceneCallback : public osg::NodeCallback
 {
 public:
     explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
     void setCasters(bool flag) { _casters = flag; }
+    void setExcluded(const std::vector<const osg::Drawable*>& drawables) { _excluded = drawables; }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
-        if (_scene && _casters) _scene->osg::Group::traverse(*nv);
+        if (_scene && _casters)
+        {
+            _scene->osg::Group::traverse(*nv);
+            osgUtil::CullVisitor* cv = nv->asCullVisitor();
+            if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
+        }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
 
 private:
     osgShadow::ShadowedScene* _scene;
     bool _casters = true;
+    std::vector<const osg::Drawable*> _excluded;
+};
+
+/** World bounds of the drawables under the traversal mask, leaving out (and listing) the
+ *  geometry with NaN or infinite vertices, which neither casts nor bounds anything. */
+class FiniteBoundsVisitor : public osg::ComputeBoundsVisitor
+{
+public:
+    explicit FiniteBoundsVisitor(MeshCache& cache) : _cache(cache) {}
+    std::vector<const osg::Drawable*> nonFinite;
+
+    void apply(osg::Drawable& drawable) override
+    {
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (geometry && !_cache.hasFiniteVertices(*geometry))
+            nonFinite.push_back(&drawable);
+        else
+            osg::ComputeBoundsVisitor::apply(drawable);
+    }
+
+private:
+    MeshCache& _cache;
 };
 
 /** World bounds of the casters and a hash of what a depth pass draws of them: each
  *  drawable, its world matrix and the versions of its vertex array and primitive sets. */
-class CasterSignatureVisitor : public osg::ComputeBoundsVisitor
+class CasterSignatureVisitor : public FiniteBoundsVisitor
 {
 public:
+    explicit CasterSignatureVisitor(MeshCache& cache) : FiniteBoundsVisitor(cache) {}
     std::size_t signature = 0;
 
     void apply(osg::Drawable& drawable) override
     {
-        osg::ComputeBoundsVisitor::apply(drawable);
+        FiniteBoundsVisitor::apply(drawable);
         mix(std::hash<const void*>()(&drawable));
         if (!_matrixStack.empty())
             for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
@@ -142,9 +190,9 @@ osg::ref_ptr<osg::Texture2D> createLitTexture()
     return t;
 }
 
-osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask)
+osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask, MeshCache& cache)
 {
-    osg::ComputeBoundsVisitor cbv;
+    FiniteBoundsVisitor cbv(cache);
     cbv.setTraversalMask(mask);
     for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(cbv);
     const osg::BoundingBox& b = cbv.getBoundingBox();
@@ -319,6 +367,14 @@ void SilhouetteShadowTechnique::recordStatistics(const Statistics& stats)
     if (stats.volumeOverdraw() >= 0.0) target->setAttribute(frame, STATS_VOLUME_OVERDRAW, stats.volumeOverdraw());
     target->setAttribute(frame, STATS_BLOCKERS_SKIPPED, stats.blockersSkipped);
     target->setAttribute(frame, STATS_SILHOUETTE_EDGES, stats.silhouetteEdges);
+}
+
+void SilhouetteShadowTechnique::warnNonFinite(const osg::Drawable& drawable) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
+    if (!_warnedNonFinite.insert(&drawable).second) return;
+    OSG_WARN << "osgShadowSilhouette: geometry \"" << drawable.getName()
+             << "\" has vertices with NaN or infinite coordinates; it casts no shadow" << std::endl;
 }
 
 void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
@@ -563,6 +619,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         warnOnce(WARN_MODE_UNAVAILABLE, std::string("Mode ") + modeName(_mode) +
                                             " is not available in this version; rendering SHADOW_MAP");
 
+    clampMapSizeToContext(cv);
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
@@ -688,14 +745,16 @@ std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<
 void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
 {
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
-    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask());
-    CasterSignatureVisitor casters;
+    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask(), *_meshCache);
+    CasterSignatureVisitor casters(*_meshCache);
     casters.setTraversalMask(settings->getCastsShadowTraversalMask());
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(casters);
     casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
     const osg::BoundingBox& box = casters.getBoundingBox();
     frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
     frame.casterSignature = casters.signature;
+    frame.nonFinite = casters.nonFinite;
+    for (const osg::Drawable* drawable : frame.nonFinite) warnNonFinite(*drawable);
     frame.region = visibleReceiverRegion(cv, frame.receivers);
     if (frame.mode != SHADOW_MAP)
         frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
@@ -800,7 +859,10 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     const bool reuse = inputs == pass.rendered &&
                        (!silhouette || (pass.silhouettePass && pass.silhouettePass->getMapSize() == _shadowMapSize));
     if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
+    {
         scene->setCasters(!reuse);
+        scene->setExcluded(frame.nonFinite);
+    }
     pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
     if (reuse)
     {
@@ -817,6 +879,19 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     if (!silhouette) return;
     cullSilhouettePass(cv, pass, light, frame.casterList);
     stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
+}
+
+void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
+{
+    // GLExtensions holds GL_MAX_TEXTURE_SIZE once the context has been made current: no
+    // query here. Before that (the very first frame) nothing is clamped.
+    const osg::State* state = cv.getState();
+    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
+    if (!ext || ext->maxTextureSize <= 0 || _shadowMapSize <= static_cast<unsigned int>(ext->maxTextureSize)) return;
+    warnOnce(WARN_CONTEXT_MAP_SIZE, "ShadowMapSize " + std::to_string(_shadowMapSize) +
+                                        " exceeds the context's GL_MAX_TEXTURE_SIZE (" +
+                                        std::to_string(ext->maxTextureSize) + "); clamped to it");
+    _shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
 }
 
 bool SilhouetteShadowTechnique::useTriangleLists(osgUtil::CullVisitor& cv) const
@@ -847,6 +922,8 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
     }
     if (!(pass.listRendered == pass.rendered)) // the lists describe another depth map
     {
+        if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.listPass->getCamera()->getCullCallback()))
+            scene->setExcluded(frame.nonFinite);
         const unsigned int mask = cv.getTraversalMask();
         cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
         pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL);
@@ -1011,7 +1088,20 @@ std::vector<osg::Vec3d> SilhouetteShadowTechnique::visibleReceiverRegion(osgUtil
         const std::array<osg::Vec3d, 8> c = frustumCorners(osg::Matrixd(), projection);
         zNear = -c[0].z(), zFar = -c[4].z();
     }
-    if (!(zNear <= zFar) || !std::isfinite(zNear) || !std::isfinite(zFar)) return {}; // nothing visible
+    if (!std::isfinite(zNear) || !std::isfinite(zFar))
+    {
+        // A drawable with non-finite vertices (left out of casting) gave the view a
+        // non-finite depth range: take the receivers' own depth range instead.
+        zNear = std::numeric_limits<double>::max(), zFar = -zNear;
+        const osg::Matrixd& modelView = *cv.getModelViewMatrix();
+        for (unsigned int i = 0; i < 8; ++i)
+        {
+            const double z = -(receivers.corner(i) * modelView).z();
+            zNear = std::min(zNear, z), zFar = std::max(zFar, z);
+        }
+        zNear = std::max(zNear, 0.0);
+    }
+    if (!(zNear <= zFar) || !std::isfinite(zNear) || !std::isfinite(zFar) || zFar <= 0.0) return {}; // nothing visible
     zNear = std::max(zNear, zFar * 1e-6);
     const double margin = 1e-3 * (zFar - zNear) + 1e-6 * zFar;
     const osg::Matrixd fitted = withDepthRange(projection, std::max(zNear - margin, zNear * 0.5), zFar + margin);

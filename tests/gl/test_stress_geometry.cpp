@@ -41,11 +41,8 @@ TEST_P(StressMode, DuplicatedVerticesAndTriangles)
 
 // A geometry with NaN and Inf vertices in the middle of the scene: a warning names it, it
 // casts no shadow at all (the reference leaves it out of casting), and no pixel is NaN.
-TEST_P(StressMode, DISABLED_NonFiniteGeometryIsLeftOutOfCasting)
+TEST_P(StressMode, NonFiniteGeometryIsLeftOutOfCasting)
 {
-    // Fails (docs/robustness.md): SHADOW_MAP gives no warning (it never builds the mesh);
-    // in SHADOW_MAP and SILHOUETTE_MAP the broken box still casts in the depth map (3% and
-    // 16% wrong); in HYBRID and SHADOW_VOLUME almost the whole image is shadowed (96%).
     NotifyCapture notes;
     ShadowedRender r = stressRender(GetParam());
     ASSERT_TRUE(r.valid());
