@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <limits>
 #include <thread>
 
 using namespace osgShadowSilhouette;
@@ -89,6 +90,32 @@ TEST(MeshCache, UnrelatedChangesDoNotRebuild)
     g->getOrCreateStateSet();
     cache->get(*g);
     EXPECT_EQ(1u, cache->getBuildCount());
+}
+
+// hasFiniteVertices() follows the vertex array's version and builds no mesh.
+TEST(MeshCache, FiniteVerticesFollowTheArrayVersion)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = cube();
+    EXPECT_TRUE(cache->hasFiniteVertices(*g));
+    auto* v = static_cast<osg::Vec3Array*>(g->getVertexArray());
+    const osg::Vec3 kept = (*v)[3];
+    (*v)[3].y() = std::numeric_limits<float>::infinity();
+    EXPECT_TRUE(cache->hasFiniteVertices(*g)) << "an edit without dirty() keeps the cached answer";
+    v->dirty();
+    EXPECT_FALSE(cache->hasFiniteVertices(*g));
+    (*v)[3] = kept;
+    (*v)[5].x() = std::numeric_limits<float>::quiet_NaN();
+    v->dirty();
+    EXPECT_FALSE(cache->hasFiniteVertices(*g));
+    (*v)[5] = (*v)[4];
+    v->dirty();
+    EXPECT_TRUE(cache->hasFiniteVertices(*g));
+    osg::ref_ptr<osg::Vec3dArray> doubles = new osg::Vec3dArray(3);
+    (*doubles)[1].z() = std::numeric_limits<double>::quiet_NaN();
+    g->setVertexArray(doubles.get());
+    EXPECT_FALSE(cache->hasFiniteVertices(*g)) << "double arrays are checked too";
+    EXPECT_EQ(0u, cache->getBuildCount());
 }
 
 TEST(MeshCache, PruneDropsEntriesOfDeletedGeometries)
