@@ -4,7 +4,10 @@
 # section of docs/benchmarks.md and the headline table of README.md are rewritten.
 #
 #   scripts/bench.sh                      # build (into $BUILD_DIR, default build-bench) and run
-#   scripts/bench.sh --scenes default     # extra arguments go to osgsilhouette-bench
+#   scripts/bench.sh --scenes default     # extra arguments go to osgsilhouette-bench and
+#                                         # replace the default of the same option; a run
+#                                         # with arguments is a subset: it writes to
+#                                         # build-bench/subset/ and leaves docs/ and README alone
 #   QUICK=1 scripts/bench.sh              # 5 frames instead of 20 (a smoke test, not results)
 #
 # osgShadow:SoftShadowMap costs 0.4-1.2 s per frame on llvmpipe whatever its map size, so the
@@ -13,9 +16,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build-bench}
-OUT=${OUT:-docs/bench}
 FRAMES=20
 [ -n "${QUICK:-}" ] && FRAMES=5
+SUBSET=$(( $# > 0 ))
+if [ "$SUBSET" = 1 ]; then OUT=${OUT:-$BUILD_DIR/subset}; else OUT=${OUT:-docs/bench}; fi
+
+# The sweep's defaults; an option the caller passes replaces its default (osg::ArgumentParser
+# reads the first occurrence of an option, so the defaults must not precede the caller's).
+DEFAULTS=(--scenes default,cubes,tree,bunny,dueling,grazing
+          --sizes 256,512,1024,2048,4096
+          --technique-sizes osgShadow:SoftShadowMap=512,2048
+          --frames "$FRAMES" --warmup 3 --out-dir "$OUT")
+ARGS=()
+i=0
+while [ $i -lt ${#DEFAULTS[@]} ]; do
+  opt=${DEFAULTS[$i]} val=${DEFAULTS[$((i + 1))]}
+  given=0
+  for a in "$@"; do [ "$a" = "$opt" ] && given=1; done
+  [ $given = 0 ] && ARGS+=("$opt" "$val")
+  i=$((i + 2))
+done
 
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} >/dev/null
 cmake --build "$BUILD_DIR" -j "${JOBS:-2}" --target osgsilhouette-bench >/dev/null
@@ -25,14 +45,15 @@ export OSG_NOTIFY_LEVEL=${OSG_NOTIFY_LEVEL:-WARN}
 mkdir -p "$OUT"
 LOAD_BEFORE=$(uptime | sed 's/.*load average: //')
 START=$(date +%s)
-scripts/with-display.sh "$BUILD_DIR/bin/osgsilhouette-bench" \
-  --scenes default,cubes,tree,bunny,dueling,grazing \
-  --sizes 256,512,1024,2048,4096 \
-  --technique-sizes osgShadow:SoftShadowMap=512,2048 \
-  --size 1024 768 --frames "$FRAMES" --warmup 3 \
-  --out-dir "$OUT" "$@"
+SIZE=(--size 1024 768)
+for a in "$@"; do [ "$a" = --size ] && SIZE=(); done
+scripts/with-display.sh "$BUILD_DIR/bin/osgsilhouette-bench" "${SIZE[@]}" "${ARGS[@]}" "$@"
 WALL=$(( $(date +%s) - START ))
 echo "sweep wall time: $((WALL / 60))m$((WALL % 60))s"
+if [ "$SUBSET" = 1 ]; then
+  echo "subset run: wrote $OUT/benchmark.csv, $OUT/benchmark.md, $OUT/*.png (docs/ left as committed)"
+  exit 0
+fi
 
 source scripts/replace-block.sh
 
