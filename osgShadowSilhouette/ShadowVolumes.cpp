@@ -437,6 +437,7 @@ void StencilShadowPasses::build(Slot& s) const
     const std::string slot = std::to_string(s.slot), light = std::to_string(s.lightNum);
     s.clear = createStencilClear();
     s.clearState = passState(bin + BIN_CLEAR, nullptr);
+    s.faceSlots = 0; // new pass states: slotFor() names the light's slots
     s.volumeState = createVolumeStateSet(_volume.get());
     s.volumeState->setRenderBinDetails(bin + BIN_VOLUMES, "RenderBin");
     s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
@@ -480,6 +481,14 @@ StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& ligh
         const osg::ref_ptr<ShadowVolumeGroup> volumes = keepVolumes ? s.volumes : nullptr;
         build(s);
         if (volumes) s.volumes = volumes;
+    }
+    if (s.hybrid && s.faceSlots != light.faceSlots)
+    {
+        // The mask and shadow-map light passes sample only the maps of their own light.
+        s.faceSlots = light.faceSlots;
+        const std::string faces = std::to_string(light.faceSlots);
+        s.maskState->setDefine("OSS_LIGHT_FACES", faces);
+        s.litShadowMapState->setDefine("OSS_LIGHT_FACES", faces);
     }
     return s;
 }

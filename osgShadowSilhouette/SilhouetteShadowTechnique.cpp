@@ -983,9 +983,16 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     {
         if (slots[i] < 0 || !vd.passes[slots[i]].frustum.valid) continue;
         const LightPass& pass = vd.passes[slots[i]];
+        unsigned int faceSlots = 0;
+        for (unsigned int s = 0; s < vd.slotInUse.size(); ++s)
+        {
+            int owner = -1;
+            vd.slotOwner->getElement(s, owner);
+            if (owner == slots[i]) faceSlots |= 1u << s;
+        }
         stencilLights.push_back({static_cast<unsigned int>(slots[i]), lights[i].description.lightNum,
                                  lights[i].description.homogeneous(),
-                                 hybrid && _blockerCulling ? pass.blockers : nullptr});
+                                 hybrid && _blockerCulling ? pass.blockers : nullptr, faceSlots});
         if (oneLight && i == _debugLight) maskSlot = slots[i];
     }
     if (oneLight && maskSlot < 0) stencilLights.clear(); // the debug light casts nothing

@@ -9,7 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
-#pragma import_defines(OSS_TRIANGLE_LISTS)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -97,7 +97,55 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 // map's, or the product of its cube faces'.
 float oss_lightPcf(int slot, vec4 eyePosition)
 {
+#if defined(OSS_LIGHT_FACES)
+    // A pass of one light (the stencil modes' mask and light passes) names its light's slots
+    // at compile time, bit s for slot s: it samples those maps only, whatever the other
+    // lights' faces.
 #ifdef OSS_CUBE_FACES
+#define OSS_FACE_PCF(s) oss_faceGate(s, eyePosition, OSS_PCF_TERM(s, eyePosition))
+#else
+#define OSS_FACE_PCF(s) OSS_PCF_TERM(s, eyePosition)
+#endif
+#define OSS_HAS_FACE(s) ((OSS_LIGHT_FACES) >> (s) & 1)
+    float term = 1.0;
+#if OSS_HAS_FACE(0)
+    term *= OSS_FACE_PCF(0);
+#endif
+#if OSS_HAS_FACE(1)
+    term *= OSS_FACE_PCF(1);
+#endif
+#if OSS_HAS_FACE(2)
+    term *= OSS_FACE_PCF(2);
+#endif
+#if OSS_HAS_FACE(3)
+    term *= OSS_FACE_PCF(3);
+#endif
+#if OSS_HAS_FACE(4)
+    term *= OSS_FACE_PCF(4);
+#endif
+#if OSS_HAS_FACE(5)
+    term *= OSS_FACE_PCF(5);
+#endif
+#if OSS_HAS_FACE(6)
+    term *= OSS_FACE_PCF(6);
+#endif
+#if OSS_HAS_FACE(7)
+    term *= OSS_FACE_PCF(7);
+#endif
+#if OSS_HAS_FACE(8)
+    term *= OSS_FACE_PCF(8);
+#endif
+#if OSS_HAS_FACE(9)
+    term *= OSS_FACE_PCF(9);
+#endif
+#if OSS_HAS_FACE(10)
+    term *= OSS_FACE_PCF(10);
+#endif
+#if OSS_HAS_FACE(11)
+    term *= OSS_FACE_PCF(11);
+#endif
+    return term; // slots 0-11: shader::MAX_SHADOW_SLOTS
+#elif defined(OSS_CUBE_FACES)
     float term = 1.0;
     for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
         if (oss_slotOwner[s] == slot)

@@ -11,6 +11,8 @@
 //   OSS_HYBRID_MASK=s      marks the silhouette pixels of slot s in the stencil buffer
 //                          (Chan and Durand 2004): front-facing to the light and 2x2 PCF
 //                          strictly between 0 and 1; every other fragment is discarded
+//   OSS_LIGHT_FACES=bits   HYBRID's mask and shadow-map light passes: the slots of the light's
+//                          maps (bit s: slot s; a point light's cube faces), read by oss_lightPcf()
 // With OSS_DEBUG_MASK the passes write the MEASURE.md mask of the light instead: the base
 // pass 0 (1 where an unshadowed light faces the surface), the light pass 1 where the surface
 // faces the light. With OSS_DEBUG_CLASSES they
