@@ -11,8 +11,10 @@
 #include <osg/Geode>
 #include <osg/Material>
 #include <osg/MatrixTransform>
+#include <osgDB/WriteFile>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -234,15 +236,17 @@ inline ossref::Mask stressReference(ShadowedRender& r, unsigned int light, unsig
     return reference;
 }
 
-/** The checks of a stress case with a reference: a finite image, and the mask of light
- *  `light` within `bound` % of the reference computed with `castsMask`; the float render
- *  may differ from the ordinary one in renderDifferencePct % of the pixels. */
-inline ossref::Comparison expectWithinBound(ShadowedRender& r, double bound, unsigned int light = 0,
-                                            unsigned int castsMask = ~0u, double renderDifferencePct = 0.5)
+/** wrong_pct of `mask` (light `light` of r) against the reference computed with
+ *  `castsMask`, asserted below `bound`, with the geometry in view and the coverage checked. */
+inline ossref::Comparison expectMaskWithinBound(ShadowedRender& r, const ossref::Mask& mask,
+                                                const ossref::Mask& reference, double bound)
 {
-    const ossref::Mask mask = r.mask(light);
-    const ossref::Mask reference = stressReference(r, light, castsMask);
     const ossref::Comparison c = ossref::compareMasks(mask, reference);
+    // OSS_STRESS_DIFF=<prefix>: the error image (ossref::diffImage) as <prefix>_<mode>_<width>.png.
+    if (const char* prefix = std::getenv("OSS_STRESS_DIFF"))
+        osgDB::writeImageFile(*ossref::diffImage(mask, reference),
+                              std::string(prefix) + "_" + SilhouetteShadowTechnique::modeName(r.technique->getMode()) +
+                                  "_" + std::to_string(mask.width) + ".png");
     EXPECT_TRUE(c.valid) << c.error;
     EXPECT_GT(c.geometryPixels, 1000) << "too little of the scene is in view to judge";
     EXPECT_LT(c.coverageMismatch, 0.002 * r.renderer->width() * r.renderer->height() + 20)
@@ -253,8 +257,35 @@ inline ossref::Comparison expectWithinBound(ShadowedRender& r, double bound, uns
     std::printf("wrong_pct %s %.4f (%lld of %lld, %lld left out)\n",
                 SilhouetteShadowTechnique::modeName(r.technique->getMode()), c.wrongPct, c.wrongPixels,
                 c.geometryPixels, c.grazingExcluded);
+    return c;
+}
+
+/** The checks of a stress case with a reference: a finite image, and the mask of light
+ *  `light` within `bound` % of the reference computed with `castsMask`; the float render
+ *  may differ from the ordinary one in renderDifferencePct % of the pixels. */
+inline ossref::Comparison expectWithinBound(ShadowedRender& r, double bound, unsigned int light = 0,
+                                            unsigned int castsMask = ~0u, double renderDifferencePct = 0.5)
+{
+    const ossref::Mask mask = r.mask(light);
+    const ossref::Mask reference = stressReference(r, light, castsMask);
+    const ossref::Comparison c = expectMaskWithinBound(r, mask, reference, bound);
     expectFiniteImage(r, mask, reference, renderDifferencePct);
     return c;
+}
+
+/** As expectWithinBound(), but the mask (light 0) is rendered into a float FBO of the
+ *  renderer's size (renderFloat()) instead of being read back from the window. */
+inline ossref::Comparison expectFloatMaskWithinBound(ShadowedRender& r, double bound)
+{
+    r.renderer->timeFrames(0, 2);
+    r.technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
+    r.technique->setDebugLight(0);
+    osg::ref_ptr<osg::Image> masked = renderFloat(r, osg::Vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    r.technique->setDebugView(SilhouetteShadowTechnique::DEBUG_NONE);
+    EXPECT_EQ(nonFiniteValues(*masked), 0) << "NaN or Inf in the shadow mask";
+    osg::ref_ptr<osg::Image> shaded = renderFloat(r, osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f));
+    EXPECT_EQ(nonFiniteValues(*shaded), 0) << "NaN or Inf in the shaded image";
+    return expectMaskWithinBound(r, ossref::maskFromImage(*masked), stressReference(r, 0, ~0u), bound);
 }
 
 } // namespace osstest
