@@ -177,6 +177,14 @@ float oss_shadowTerm(int light, vec4 eyePosition)
     return slot < 0 ? 1.0 : oss_shadowSlotTerm(slot, eyePosition);
 }
 
+// A face counts as facing a light when N.L exceeds this, not merely 0: a face that contains
+// the light (N.L = 0 exactly, e.g. the ground under a light along a horizontal axis) is
+// otherwise lit or not by the rounding of the derivative normal, and half of it then goes
+// to a depth-map lookup exactly at the casters' bottom row. 1e-3 is 0.06 degrees; such a
+// face gets at most 0.1% of the light's diffuse, and the exact reference's grazing band
+// (0 < N.L < 0.05) is not scored.
+const float OSS_MIN_FACING = 1e-3;
+
 // Whether the surface at eye-space point p faces GL light n (geometric normal, from the
 // screen-space derivatives of p) and lies inside its spot cone: the "facing" of the exact
 // reference. Call it where derivatives are defined (uniform control flow).
@@ -189,7 +197,7 @@ bool oss_facesLight(int n, vec3 p)
     vec3 L = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);
     bool inCone = lp.w == 0.0 || gl_LightSource[n].spotCutoff > 90.0 ||
                   dot(-L, normalize(gl_LightSource[n].spotDirection)) >= gl_LightSource[n].spotCosCutoff;
-    return dot(ng, L) > 0.0 && inCone;
+    return dot(ng, L) > OSS_MIN_FACING && inCone;
 }
 
 // DebugView DEBUG_CLASSES (Chan and Durand 2004, figure colours): red / blue where the
