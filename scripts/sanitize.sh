@@ -32,10 +32,10 @@ export OSG_NOTIFY_LEVEL=${OSG_NOTIFY_LEVEL:-WARN}
 status=0
 # The CPU tests (stress ones included) with LeakSanitizer. eco_install_consumer (label cpu)
 # builds an unsanitized consumer against the installed tree: not meaningful here.
-# cpu_serializer is left out until the null member-pointer call that this build finds in
-# plugins/serializers/CheckedSerializers.h (CheckedEnumSerializer::set) is fixed
-# (docs/robustness.md); scripts/sanitize.sh -R cpu_serializer shows it.
-EXCLUDE='^eco_|^cpu_serializer\.'
+# cpu_serializer's OsgconvRoundTripKeepsEveryProperty runs Debian's osgconv, an
+# unsanitized program, which cannot load the sanitized serializer plugin ("ASan runtime
+# does not come first"); the other serializer cases read and write through the same plugin.
+EXCLUDE='^eco_|^cpu_serializer\.Serializer\.OsgconvRoundTrip'
 [[ " $* " == *" -R "* ]] && EXCLUDE='^eco_'
 ctest --test-dir "$BUILD" --output-on-failure -j "$JOBS" -L cpu -E "$EXCLUDE" "$@" || status=1
 # The GL stress cases with ASan and UBSan but without LeakSanitizer: llvmpipe allocates

@@ -66,8 +66,10 @@ public:
         is >> value;
         if (is.getException()) return false;
         C& object = static_cast<C&>(obj);
-        (object.*(this->_setter))(value);
-        const P kept = (object.*(this->_getter))();
+        const Setter setter = this->_setter;
+        const Getter getter = this->_getter;
+        (object.*setter)(value);
+        const P kept = (object.*getter)();
         if (!(kept == value))
         {
             OSG_WARN << propertyPrefix(obj, this->_name) << toText(value) << " is out of range; using "
@@ -150,8 +152,10 @@ private:
 
     void set(C& object, P value, const std::string& text)
     {
-        (object.*(this->_setter))(value);
-        const P kept = (object.*(this->_getter))();
+        const Setter setter = this->_setter;
+        const Getter getter = this->_getter;
+        (object.*setter)(value);
+        const P kept = (object.*getter)();
         if (kept != value)
         {
             OSG_WARN << propertyPrefix(object, this->_name) << text << " is out of range; using "
