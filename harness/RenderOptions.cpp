@@ -139,6 +139,12 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         error = "--hybrid-method takes auto, stencil or lists";
         return false;
     }
+    if (a.read("--polygon-offset", o.polygonOffsetFactor, o.polygonOffsetUnits) &&
+        !(o.polygonOffsetFactor >= 0.0f && o.polygonOffsetUnits >= 0.0f))
+    {
+        error = "--polygon-offset takes two non-negative numbers, FACTOR UNITS";
+        return false;
+    }
     if (a.read("--offscreen")) o.offscreen = true;
     for (int i = 1; i < a.argc(); ++i)
     {
@@ -161,7 +167,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
-      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists]\n";
+      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--polygon-offset FACTOR UNITS]\n";
     return s.str();
 }
 

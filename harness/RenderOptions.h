@@ -44,6 +44,8 @@ struct RenderOptions
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
+    float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
+    float polygonOffsetUnits = -1.0f;
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };

@@ -105,6 +105,11 @@ int main(int argc, char** argv)
     if (technique)
     {
         technique->setBlockerCulling(options.blockerCulling);
+        if (options.polygonOffsetFactor >= 0.0f)
+        {
+            technique->setPolygonOffsetFactor(options.polygonOffsetFactor);
+            technique->setPolygonOffsetUnits(options.polygonOffsetUnits);
+        }
         technique->setHybridMethod(options.hybridMethod == "lists"     ? SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS
                                    : options.hybridMethod == "stencil" ? SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES
                                                                        : SilhouetteShadowTechnique::HYBRID_AUTO);
