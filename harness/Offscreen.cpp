@@ -153,10 +153,20 @@ void Renderer::resize(int width, int height)
 
 FrameTiming Renderer::timeFrames(int warmup, int frames)
 {
-    for (int i = 0; i < warmup; ++i) _viewer->frame();
+    return timeFrames(warmup, frames, [](int) {});
+}
+
+FrameTiming Renderer::timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame)
+{
+    for (int i = 0; i < warmup; ++i)
+    {
+        beforeFrame(i);
+        _viewer->frame();
+    }
     std::vector<double> cpu, gpu;
     for (int i = 0; i < frames; ++i)
     {
+        beforeFrame(warmup + i);
         const osg::Timer_t t0 = osg::Timer::instance()->tick();
         _viewer->frame();
         cpu.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));

@@ -7,6 +7,7 @@
 #include <osg/Image>
 #include <osgViewer/Viewer>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -37,6 +38,8 @@ public:
 
     /** Renders warmup frames, then frames timed frames. */
     FrameTiming timeFrames(int warmup, int frames);
+    /** The same, calling beforeFrame(i) before frame i (warm-up frames first, from 0). */
+    FrameTiming timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame);
 
     /** Renders one frame with the given clear colour and returns its RGB pixels (bottom row first). */
     osg::ref_ptr<osg::Image> renderAndCapture(const osg::Vec4& clearColor = osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f));

@@ -146,6 +146,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         return false;
     }
     if (a.read("--offscreen")) o.offscreen = true;
+    if (a.read("--moving-light")) o.movingLight = true;
     for (int i = 1; i < a.argc(); ++i)
     {
         if (a.isOption(i)) continue;
@@ -167,7 +168,8 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
-      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--polygon-offset FACTOR UNITS]\n";
+      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--polygon-offset FACTOR UNITS]\n"
+      << "    [--moving-light]\n";
     return s.str();
 }
 

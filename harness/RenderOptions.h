@@ -46,6 +46,7 @@ struct RenderOptions
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
     float polygonOffsetUnits = -1.0f;
+    bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };
