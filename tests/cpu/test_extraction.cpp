@@ -134,9 +134,18 @@ TEST_P(ExtractionCase, CountsMatchHandDerivation)
     const Case& c = GetParam();
     EXPECT_EQ(c.closed, silhouette.closedCaster);
     EXPECT_EQ(c.closed, volume.closedCaster);
-    if (c.litFaces >= 0) EXPECT_EQ(std::size_t(c.litFaces), silhouette.litFaceCount);
-    if (c.silhouetteEdges >= 0) EXPECT_EQ(std::size_t(c.silhouetteEdges), silhouette.edgeCount());
-    if (c.loops >= 0) EXPECT_EQ(std::size_t(c.loops), silhouetteLoops(silhouette));
+    if (c.litFaces >= 0)
+    {
+        EXPECT_EQ(std::size_t(c.litFaces), silhouette.litFaceCount);
+    }
+    if (c.silhouetteEdges >= 0)
+    {
+        EXPECT_EQ(std::size_t(c.silhouetteEdges), silhouette.edgeCount());
+    }
+    if (c.loops >= 0)
+    {
+        EXPECT_EQ(std::size_t(c.loops), silhouetteLoops(silhouette));
+    }
     EXPECT_EQ(silhouette.positions.size(), silhouette.vertexIndices.size());
 }
 
@@ -157,7 +166,10 @@ TEST_P(ExtractionCase, VolumeIsWatertight)
     const std::uint32_t n = std::uint32_t(mesh.positions.size());
     for (std::uint32_t v : silhouetteCrossings(silhouette)) expectedSeams.insert({ v, v + n });
     EXPECT_EQ(expectedSeams, nonManifoldEdges(volume));
-    if (expectedSeams.empty()) EXPECT_TRUE(pinchedVertices(volume).empty());
+    if (expectedSeams.empty())
+    {
+        EXPECT_TRUE(pinchedVertices(volume).empty());
+    }
 }
 
 TEST_P(ExtractionCase, StencilCountAtProbePoints)
