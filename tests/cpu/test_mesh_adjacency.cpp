@@ -354,8 +354,12 @@ TEST(NonManifold, ThirdFaceOnAnEdgeIsKeptAsAnIsolatedOpenFace)
         yz.insert({ m.positions[v].y(), m.positions[v].z() });
         EXPECT_EQ(0.0f, m.positions[v].x());
         for (std::size_t f = 0; f < m.faces.size(); ++f)
+        {
             if (f != finIndex)
+            {
                 EXPECT_EQ(std::end(m.faces[f].v), std::find(std::begin(m.faces[f].v), std::end(m.faces[f].v), v));
+            }
+        }
     }
     std::set<std::pair<float, float>> expected = { { -1.0f, 0.0f }, { 1.0f, 0.0f }, { 0.0f, 1.0f } };
     EXPECT_EQ(expected, yz);

@@ -215,7 +215,10 @@ TEST_P(WedgeTest, MatchesHandDerivedResult)
     for (const SampleRow& s : r.samples)
     {
         SCOPED_TRACE(::testing::Message() << "sample (" << s.p.x() << ", " << s.p.y() << ")");
-        if (s.corner != ANY) EXPECT_EQ(int(wedgeCorner(r.points, s.p)), s.corner);
+        if (s.corner != ANY)
+        {
+            EXPECT_EQ(int(wedgeCorner(r.points, s.p)), s.corner);
+        }
         EXPECT_EQ(silhouetteMapLit(r.points, r.lit, s.p), s.lit);
     }
 }

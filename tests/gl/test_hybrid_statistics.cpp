@@ -110,7 +110,9 @@ TEST(HybridStatistics, BlockerCullingSkipsHiddenCastersAndKeepsThePicture)
     EXPECT_GT(on.blockersSkipped, on.blockersTested / 20) << "the cubes hide each other from the light";
     EXPECT_LT(on.blockersSkipped, on.blockersTested);
     if (on.volumeFragments >= 0 && off.volumeFragments >= 0)
+    {
         EXPECT_LT(on.volumeFragments, off.volumeFragments) << "skipped volumes shade no fragments";
+    }
 
     const ossref::Comparison c = ossref::compareMasks(with, without);
     ASSERT_TRUE(c.valid) << c.error;

@@ -293,9 +293,18 @@ TEST_P(UnreachableLights, CostNothing)
     EXPECT_EQ(s.lightsShadowed, 2u);
     EXPECT_EQ(occurrences(warnings, "MaxShadowLights"), 0) << "skipped lights take no part of the budget";
     const std::string mode = m.mode;
-    if (mode == "shadowmap" || mode == "hybrid") EXPECT_EQ(s.shadowPasses, 2u);
-    if (mode == "silhouette") EXPECT_EQ(s.shadowPasses, 2u);
-    if (mode == "volume") EXPECT_EQ(s.shadowPasses, 0u);
+    if (mode == "shadowmap" || mode == "hybrid")
+    {
+        EXPECT_EQ(s.shadowPasses, 2u);
+    }
+    if (mode == "silhouette")
+    {
+        EXPECT_EQ(s.shadowPasses, 2u);
+    }
+    if (mode == "volume")
+    {
+        EXPECT_EQ(s.shadowPasses, 0u);
+    }
     const unsigned int volumes = s.zfailCasters + s.zpassCasters;
 
     // The masks: the lights that reach the view and the spot whose cone misses it (unlit
@@ -345,7 +354,10 @@ TEST_P(PointLightAmidCasters, MatchesTheReference)
     EXPECT_LT(c.wrongPct, m.ringBoundPct) << c.wrongPixels << " wrong pixels of " << c.geometryPixels;
     const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
     EXPECT_EQ(s.lightsShadowed, 1u);
-    if (std::string(m.mode) != "volume") EXPECT_GE(s.shadowPasses, 5u) << "one pass per cube face that matters";
+    if (std::string(m.mode) != "volume")
+    {
+        EXPECT_GE(s.shadowPasses, 5u) << "one pass per cube face that matters";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, PointLightAmidCasters, ::testing::ValuesIn(MODES),
