@@ -8,6 +8,20 @@ namespace osshar {
 
 namespace {
 
+/** Reads `option on|off` into flag (left alone when absent); false with error otherwise. */
+bool readOnOff(osg::ArgumentParser& a, const char* option, bool& flag, std::string& error)
+{
+    std::string value;
+    if (!a.read(option, value)) return true;
+    if (value != "on" && value != "off")
+    {
+        error = std::string(option) + " takes on or off";
+        return false;
+    }
+    flag = value == "on";
+    return true;
+}
+
 bool readVec3(osg::ArgumentParser& a, const char* name, std::optional<osg::Vec3d>& out)
 {
     double x, y, z;
@@ -123,16 +137,8 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     a.read("--reference", o.reference);
     a.read("--diff", o.diff);
     a.read("--classes", o.classes);
-    std::string culling;
-    if (a.read("--blocker-culling", culling))
-    {
-        if (culling != "on" && culling != "off")
-        {
-            error = "--blocker-culling takes on or off";
-            return false;
-        }
-        o.blockerCulling = culling == "on";
-    }
+    if (!readOnOff(a, "--blocker-culling", o.blockerCulling, error)) return false;
+    if (!readOnOff(a, "--hybrid-edges", o.hybridEdgeMask, error)) return false;
     if (a.read("--hybrid-method", o.hybridMethod) && o.hybridMethod != "auto" && o.hybridMethod != "stencil" &&
         o.hybridMethod != "lists")
     {
@@ -168,7 +174,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
-      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--polygon-offset FACTOR UNITS]\n"
+      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
       << "    [--moving-light]\n";
     return s.str();
 }

@@ -43,6 +43,7 @@ struct RenderOptions
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
+    bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
     float polygonOffsetUnits = -1.0f;

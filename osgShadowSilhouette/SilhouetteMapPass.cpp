@@ -107,6 +107,16 @@ SilhouetteMapPass::SilhouetteMapPass(unsigned int mapSize, const osg::StateSet& 
 
 SilhouetteMapPass::~SilhouetteMapPass() = default;
 
+void SilhouetteMapPass::setDepthComparison(bool compare)
+{
+    if (compare == _depthComparison) return;
+    _depthComparison = compare;
+    if (compare)
+        _camera->getStateSet()->setDefine(shader::DEFINE_SILMAP_COMPARE);
+    else
+        _camera->getStateSet()->removeDefine(shader::DEFINE_SILMAP_COMPARE);
+}
+
 void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustum, osg::Texture2D* depthTexture,
                              const std::vector<Caster>& casters, const osg::Vec4d& light)
 {

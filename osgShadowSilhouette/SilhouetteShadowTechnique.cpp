@@ -221,7 +221,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _debugView(copy._debugView),
       _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling),
-      _hybridMethod(copy._hybridMethod)
+      _hybridMethod(copy._hybridMethod),
+      _hybridEdgeMask(copy._hybridEdgeMask)
 {
 }
 
@@ -345,6 +346,11 @@ void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
 void SilhouetteShadowTechnique::setHybridMethod(HybridMethod method)
 {
     _hybridMethod = (method >= HYBRID_AUTO && method <= HYBRID_TRIANGLE_LISTS) ? method : HYBRID_AUTO;
+}
+
+void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)
+{
+    _hybridEdgeMask = flag;
 }
 
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
@@ -554,25 +560,19 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->lightIndex->setElement(i, i);
         vd->shadowSlot->setElement(i, -1);
     }
-    const unsigned int listSlotCount = std::max(1u, listSlots());
-    ss->setDefine(shader::DEFINE_MAX_LIST_SLOTS, std::to_string(listSlotCount));
-    vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC2, shader::LIST_CAPACITY, listSlotCount);
-    vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, listSlotCount);
-    osg::ref_ptr<osg::Uniform> listHeads =
-        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_HEADS, listSlotCount);
-    osg::ref_ptr<osg::Uniform> listCounts =
-        new osg::Uniform(osg::Uniform::UNSIGNED_INT_SAMPLER_2D, shader::LIST_COUNTS, listSlotCount);
-    for (unsigned int slot = 0; slot < listSlotCount; ++slot)
+    // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
+    // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
+    ss->setDefine(shader::DEFINE_MAX_LIST_SLOTS, "1");
+    vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
+    vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
+    for (unsigned int slot = 0; slot < slots; ++slot)
     {
-        vd->listCapacity->setElement(slot, 0u, 0u);
+        vd->listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
         vd->listPerspective->setElement(slot, 0);
-        listHeads->setElement(slot, int(listUnit(slot)));
-        listCounts->setElement(slot, int(listCountUnit(slot)));
     }
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
                             vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
-                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), listHeads.get(),
-                            listCounts.get()})
+                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
@@ -654,13 +654,20 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
             firstFaceSlot[i] = nextFreeSlot, frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
                                         static_cast<unsigned int>(vd.passes.size()));
     frame.triangleLists = frame.mode == HYBRID && useTriangleLists(cv);
-    if (frame.triangleLists && nextFreeSlot > listSlots())
+    const unsigned int blocks = cv.getState() ? TriangleListPass::fragmentStorageBlocks(cv.getState()->getContextID()) : 0;
+    const unsigned int listLimit = blocks > 0 ? std::min(listSlots(), blocks) : listSlots();
+    if (frame.triangleLists && nextFreeSlot > listLimit)
     {
         warnOnce(WARN_LIST_SLOTS, "HYBRID: this frame's " + std::to_string(nextFreeSlot) +
-                                      " shadow maps (cube faces included) exceed the " + std::to_string(listSlots()) +
-                                      " that triangle lists hold (BaseTextureUnit); using HYBRID_STENCIL_VOLUMES");
+                                      " shadow maps (cube faces included) exceed the " + std::to_string(listLimit) +
+                                      " that triangle lists hold (one fragment shader storage block each: "
+                                      "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS is " + std::to_string(blocks) +
+                                      "); using HYBRID_STENCIL_VOLUMES");
         frame.triangleLists = false;
     }
+    // One storage block per slot in use: the eye pass declares no more than it reads.
+    if (frame.triangleLists)
+        vd.receiverStateSet->setDefine(shader::DEFINE_MAX_LIST_SLOTS, std::to_string(std::max(1u, nextFreeSlot)));
     stats.triangleLists = frame.triangleLists;
     const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
     if (frame.triangleLists)
@@ -685,8 +692,13 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
     }
-    // HYBRID's lists are bound in the silhouette maps' units, which it does not otherwise use.
-    if (!frame.triangleLists) bindSilhouetteMaps(vd, silhouette ? silhouetteMaps : std::vector<osg::Texture2D*>());
+    // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too).
+    const bool edgeMasks = frame.triangleLists && _hybridEdgeMask;
+    bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
+    if (edgeMasks)
+        vd.receiverStateSet->setDefine(shader::DEFINE_HYBRID_EDGES);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_HYBRID_EDGES);
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (slots[i] < 0) continue;
@@ -694,7 +706,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), frusta[i],
                   firstFaceSlot[i], silhouetteMaps, stats);
     }
-    if (silhouette) bindSilhouetteMaps(vd, silhouetteMaps);
+    if (silhouette || edgeMasks) bindSilhouetteMaps(vd, silhouetteMaps);
 
     if (stencilMode)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
@@ -714,8 +726,8 @@ unsigned int SilhouetteShadowTechnique::slotCapacity() const
 
 unsigned int SilhouetteShadowTechnique::listSlots() const
 {
-    // Heads and counts of slot s sit in the silhouette units of slots s and listSlots() + s.
-    return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity() / 2);
+    // Every slot can have lists: they take no texture unit, one shader storage block each.
+    return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity());
 }
 
 bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
@@ -838,7 +850,11 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     cullLightPasses(cv, pass, frame, light, stats);
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
                                                      osg::StateAttribute::ON);
-    if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
+    if (frame.triangleLists)
+    {
+        cullTriangleListPass(cv, vd, pass, slot, frame, light);
+        if (_hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
+    }
     if (!silhouette) return;
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
@@ -877,7 +893,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     ++stats.shadowPasses;
     pass.rendered = inputs;
     if (!silhouette) return;
-    cullSilhouettePass(cv, pass, light, frame.casterList);
+    cullSilhouettePass(cv, pass, light, frame.casterList, false);
     stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
 }
 
@@ -931,16 +947,29 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         pass.listRendered = pass.rendered;
     }
     osg::StateSet& ss = *vd.receiverStateSet;
-    ss.setTextureAttributeAndModes(listUnit(slot), pass.listPass->getHeads(), osg::StateAttribute::ON);
-    ss.setTextureAttributeAndModes(listCountUnit(slot), pass.listPass->getCounts(), osg::StateAttribute::ON);
     const unsigned int binding = shader::LIST_READ_BINDING + slot;
     auto* bound = dynamic_cast<osg::ShaderStorageBufferBinding*>(
         ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
     if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
         ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
                                                                     pass.listPass->getBufferSize()));
-    vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity());
+    vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity(),
+                                pass.listPass->getGridSize(), 0u);
     vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
+}
+
+void SilhouetteShadowTechnique::cullEdgeMask(osgUtil::CullVisitor& cv, LightPass& pass, const FrameContext& frame,
+                                             const LightDescription& light, osg::Texture2D*& silhouetteMap,
+                                             Statistics& stats)
+{
+    if (!pass.silhouettePass || pass.silhouettePass->getMapSize() != _shadowMapSize) pass.edgesRendered = PassInputs();
+    if (!(pass.edgesRendered == pass.rendered)) // the mask describes another depth map
+    {
+        cullSilhouettePass(cv, pass, light, frame.casterList, true);
+        pass.edgesRendered = pass.rendered;
+    }
+    silhouetteMap = pass.silhouettePass->getTexture();
+    stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
@@ -1135,7 +1164,8 @@ void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPas
 }
 
 void SilhouetteShadowTechnique::cullSilhouettePass(osgUtil::CullVisitor& cv, LightPass& pass,
-                                                   const LightDescription& light, const std::vector<Caster>& casters)
+                                                   const LightDescription& light, const std::vector<Caster>& casters,
+                                                   bool depthComparison)
 {
     if (!pass.silhouettePass || pass.silhouettePass->getMapSize() != _shadowMapSize)
     {
@@ -1143,6 +1173,7 @@ void SilhouetteShadowTechnique::cullSilhouettePass(osgUtil::CullVisitor& cv, Lig
         name.replace(name.find("depth pass"), std::strlen("depth pass"), "silhouette map");
         pass.silhouettePass = new SilhouetteMapPass(_shadowMapSize, *_silhouetteMapStateSet, name);
     }
+    pass.silhouettePass->setDepthComparison(depthComparison);
     const unsigned int mask = cv.getTraversalMask();
     cv.setTraversalMask(~0u); // the pass draws only its edges, whatever the view's mask
     pass.silhouettePass->cull(cv, pass.frustum, pass.depthTexture.get(), casters, light.homogeneous());

@@ -105,6 +105,7 @@ int main(int argc, char** argv)
     if (technique)
     {
         technique->setBlockerCulling(options.blockerCulling);
+        technique->setHybridEdgeMask(options.hybridEdgeMask);
         if (options.polygonOffsetFactor >= 0.0f)
         {
             technique->setPolygonOffsetFactor(options.polygonOffsetFactor);

@@ -52,8 +52,17 @@ vec4 oss_silhouetteDebug(vec4 eyePosition);
 #define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #elif defined(OSS_TRIANGLE_LISTS)
 // HYBRID with triangle lists: oss_listTerm() (oss_trilist_term.frag.glsl).
-float oss_listTerm(int s, float pcf, vec4 eyePosition);
-#define OSS_SLOT_TERM(s) oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition), oss_eyePosition)
+float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk);
+// A slot's silhouette pixels walk their lists only where its light's diffuse and specular
+// reach half an 8-bit step (oss_walkLight, set in main): elsewhere the term multiplies a
+// colour that rounds to nothing (faces turned away from the light, the end of its range),
+// and the PCF answer is kept at no cost. The masks (DEBUG_SHADOW_MASK) always walk.
+#ifdef OSS_CUBE_FACES
+#define OSS_SLOT_WALK(s) oss_walkLight[oss_slotOwner[s]]
+#else
+#define OSS_SLOT_WALK(s) oss_walkLight[s]
+#endif
+#define OSS_SLOT_TERM(s) oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition), oss_eyePosition, OSS_SLOT_WALK(s))
 #else
 #define OSS_SLOT_TERM(s) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #endif
@@ -90,6 +99,11 @@ void main()
 void main()
 {
     vec3 color = oss_unshadowedColor.rgb;
+#ifdef OSS_TRIANGLE_LISTS
+    bool oss_walkLight[OSS_MAX_SHADOW_LIGHTS];
+    for (int l = 0; l < OSS_MAX_SHADOW_LIGHTS; ++l)
+        oss_walkLight[l] = max(max(oss_shadowedColor[l].r, oss_shadowedColor[l].g), oss_shadowedColor[l].b) >= 0.5 / 255.0;
+#endif
 #ifdef OSS_CUBE_FACES
     float lightTerm[OSS_MAX_SHADOW_LIGHTS];
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)

@@ -38,7 +38,8 @@ float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeTo
 #endif
 #ifdef OSS_TRIANGLE_LISTS
 // HYBRID with triangle lists: the term of oss_trilist_term.frag.glsl, linked into the same program.
-float oss_listTerm(int s, float pcf, vec4 eyePosition);
+float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk);
+bool oss_listResolves(int s, float pcf, vec4 eyePosition);
 #endif
 
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
@@ -52,7 +53,7 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
 #if defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS)
-#define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p)
+#define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p, true)
 #else
 #define OSS_MAP_TERM(s, p) OSS_PCF_TERM(s, p)
 #endif
@@ -226,7 +227,7 @@ vec2 oss_shadowSlotClass(int slot, vec4 eyePosition)
 #else
             float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
 #ifdef OSS_TRIANGLE_LISTS
-            return vec2(step(0.5, oss_listTerm(s, p, eyePosition)), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+            return vec2(step(0.5, oss_listTerm(s, p, eyePosition, true)), oss_listResolves(s, p, eyePosition) ? 1.0 : 0.0);
 #else
             return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
 #endif

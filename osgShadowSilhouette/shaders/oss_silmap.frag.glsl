@@ -12,7 +12,14 @@
 // The C++ twin is pickSilhouettePoint() in osgShadowSilhouette/SilhouettePoints; keep
 // them identical (tests/gl/test_silhouette_map.cpp compares them).
 
+#pragma import_defines(OSS_SILMAP_COMPARE)
+#ifdef OSS_SILMAP_COMPARE
+// HYBRID's edge mask: the depth map keeps its hardware comparison (LEQUAL), the gather
+// returns the four tests of the edge's depth instead of the four depths.
+uniform sampler2DShadow oss_silmapDepth;
+#else
 uniform sampler2D oss_silmapDepth;      // the light's depth map, read without comparison
+#endif
 uniform float oss_silmapDepthBias;       // slack of the occlusion test, in [0, 1] depth
 
 flat in vec4 oss_edge;
@@ -79,9 +86,15 @@ void main()
     float depth = mix(oss_edgeDepth.x, oss_edgeDepth.y, t);
     // Texel (i, j) lies between depth samples i, i+1 and j, j+1: gather around their middle.
     vec2 size = vec2(textureSize(oss_silmapDepth, 0));
+#ifdef OSS_SILMAP_COMPARE
+    vec4 front = textureGather(oss_silmapDepth, (texel + 1.0) / size, depth - oss_silmapDepthBias);
+    if (all(equal(front, vec4(0.0))))
+        discard;
+#else
     vec4 samples = textureGather(oss_silmapDepth, (texel + 1.0) / size);
     if (all(greaterThan(vec4(depth - oss_silmapDepthBias), samples)))
         discard;
+#endif
     // One channel: X * 4096 + Y, X and Y the coordinates in 1/2048 texel (encodeSilhouettePoint()).
     vec2 q = floor(clamp(point, 0.0, 1.0) * 2048.0 + 0.5);
     gl_FragColor = vec4(q.x * 4096.0 + q.y, 0.0, 0.0, 1.0);

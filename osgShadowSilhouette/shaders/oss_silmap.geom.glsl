@@ -15,7 +15,12 @@ layout(triangle_strip, max_vertices = 4) out;
 
 #define OSS_HALF_WIDTH 0.75
 
+#pragma import_defines(OSS_SILMAP_COMPARE)
+#ifdef OSS_SILMAP_COMPARE
+uniform sampler2DShadow oss_silmapDepth; // the light's depth map (its size is the map size)
+#else
 uniform sampler2D oss_silmapDepth;       // the light's depth map (its size is the map size)
+#endif
 
 flat out vec4 oss_edge;      // endpoints a.xy, b.xy in silhouette-map window coordinates
 flat out vec2 oss_edgeDepth; // window depths of a and b, in [0, 1]

@@ -2,12 +2,10 @@
 // osgShadowSilhouette: triangle-list pass, fragment stage: one fragment per texel of the
 // triangle's grown bounding box. Keeps the texels whose square the triangle overlaps
 // (separating axes: the box's two and the triangle's three edge normals) and prepends the
-// triangle to the texel's list.
+// triangle to the texel's list (buffer layout: oss_trilist.geom.glsl).
 
 layout(early_fragment_tests) in;
 layout(std430, binding = 0) buffer OssList { uint oss_list[]; };
-layout(r32ui, binding = 0) uniform coherent uimage2D oss_listHeadImage;
-layout(r32ui, binding = 1) uniform coherent uimage2D oss_listCountImage; // nodes per texel
 uniform uint oss_listNodeCapacity;
 uniform vec2 oss_listGridSize;
 
@@ -36,10 +34,13 @@ void main()
     uint node = atomicAdd(oss_list[0], 1u);
     if (node < oss_listNodeCapacity)
     {
-        uint next = imageAtomicExchange(oss_listHeadImage, texel, node);
-        oss_list[4u + 2u * node] = oss_triangle;
-        oss_list[5u + 2u * node] = next;
-        imageAtomicAdd(oss_listCountImage, texel, 1u);
+        uint grid = uint(oss_listGridSize.x);
+        uint t = uint(texel.y) * grid + uint(texel.x);
+        uint next = atomicExchange(oss_list[4u + t], node + 1u); // heads hold node + 1
+        uint nodes = 4u + 2u * grid * grid;
+        oss_list[nodes + 2u * node] = oss_triangle;
+        oss_list[nodes + 2u * node + 1u] = next;
+        atomicAdd(oss_list[4u + grid * grid + t], 1u);
     }
     gl_FragColor = vec4(0.0);
 }

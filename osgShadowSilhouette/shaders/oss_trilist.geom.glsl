@@ -7,10 +7,11 @@
 // fragment stage keeps exactly those (conservative rasterization, as in irregular
 // z-buffers). Triangles reaching behind a perspective light's eye plane are not listed.
 //
-// List buffer layout (uints): [0] node count, [1] triangle count, [2, 3] unused, then
-// nodeCapacity (even) nodes of (triangle, next), then triangleCapacity triangles of three
-// vec4 (x0 y0 x1 y1) (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for
-// a perspective one (both grow away from the light and are linear in texture-space x, y).
+// List buffer layout (uints, G the grid size): [0] node count, [1] triangle count, [2, 3]
+// unused; G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity (even) nodes
+// of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
+// (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for a perspective one
+// (both grow away from the light and are linear in texture-space x, y).
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
@@ -40,7 +41,8 @@ void main()
     if (index >= oss_listTriangleCapacity)
         return; // overflow: the eye pass sees the count and falls back to the shadow map
     bool ortho = !oss_listPerspective;
-    uint base = 4u + 2u * oss_listNodeCapacity + 12u * index;
+    uint grid = uint(oss_listGridSize.x);
+    uint base = 4u + 2u * grid * grid + 2u * oss_listNodeCapacity + 12u * index;
     oss_list[base + 0u] = floatBitsToUint(t0.x);
     oss_list[base + 1u] = floatBitsToUint(t0.y);
     oss_list[base + 2u] = floatBitsToUint(t1.x);

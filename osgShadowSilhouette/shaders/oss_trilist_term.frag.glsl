@@ -8,7 +8,7 @@
 // texture-space x, y and lies nearer to the light. Other pixels keep the shadow map's answer.
 // Linked into the receiver program; empty unless OSS_TRIANGLE_LISTS is defined.
 
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES)
 #ifdef OSS_TRIANGLE_LISTS
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
@@ -16,111 +16,105 @@
 #ifndef OSS_MAX_SHADOW_SLOTS
 #define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
-// Slots 0 .. OSS_MAX_LIST_SLOTS-1 have lists (at most 8); the others answer with their PCF.
+// Slots 0 .. OSS_MAX_LIST_SLOTS-1 have lists (at most 12, one storage block each: the
+// technique sets it to the slots in use); the others answer with their PCF.
 #ifndef OSS_MAX_LIST_SLOTS
 #define OSS_MAX_LIST_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
 
-layout(std430, binding = 1) readonly buffer OssListRead { uint data[]; } oss_lists[OSS_MAX_LIST_SLOTS];
-// The same buffers seen as vec4s, for the triangles (one 16-byte load per three coordinates).
-layout(std430, binding = 1) readonly buffer OssListRead4 { uvec4 data4[]; } oss_lists4[OSS_MAX_LIST_SLOTS];
-uniform usampler2D oss_listHeads[OSS_MAX_LIST_SLOTS];
-uniform usampler2D oss_listCounts[OSS_MAX_LIST_SLOTS]; // nodes per texel
-uniform uvec2 oss_listCapacity[OSS_MAX_LIST_SLOTS];  // nodes, triangles of each slot's buffer
-uniform int oss_listSlotPerspective[OSS_MAX_LIST_SLOTS]; // 1: perspective light
+// Each slot's whole list buffer (layout: oss_trilist.geom.glsl), read 16 bytes at a time.
+layout(std430, binding = 1) readonly buffer OssListRead { uvec4 data4[]; } oss_lists[OSS_MAX_LIST_SLOTS];
+uniform uvec4 oss_listCapacity[OSS_MAX_SHADOW_SLOTS];  // nodes, triangles, grid size, 0 of each slot's buffer
+uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective light
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 
-// Slot s of the buffer and head arrays (constant indices: see oss_shadow.frag.glsl).
+// The i-th vec4 of slot s's buffer (constant indices: see oss_shadow.frag.glsl).
+uvec4 oss_listData4(int s, uint i)
+{
+#if OSS_MAX_LIST_SLOTS > 1
+    if (s == 1) return oss_lists[1].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 2
+    if (s == 2) return oss_lists[2].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 3
+    if (s == 3) return oss_lists[3].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 4
+    if (s == 4) return oss_lists[4].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 5
+    if (s == 5) return oss_lists[5].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 6
+    if (s == 6) return oss_lists[6].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 7
+    if (s == 7) return oss_lists[7].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 8
+    if (s == 8) return oss_lists[8].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 9
+    if (s == 9) return oss_lists[9].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 10
+    if (s == 10) return oss_lists[10].data4[i];
+#endif
+#if OSS_MAX_LIST_SLOTS > 11
+    if (s == 11) return oss_lists[11].data4[i];
+#endif
+    return oss_lists[0].data4[i];
+}
+
+// The i-th uint of slot s's buffer.
 uint oss_listData(int s, uint i)
 {
-#if OSS_MAX_LIST_SLOTS > 1
-    if (s == 1) return oss_lists[1].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 2
-    if (s == 2) return oss_lists[2].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 3
-    if (s == 3) return oss_lists[3].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 4
-    if (s == 4) return oss_lists[4].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 5
-    if (s == 5) return oss_lists[5].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 6
-    if (s == 6) return oss_lists[6].data[i];
-#endif
-#if OSS_MAX_LIST_SLOTS > 7
-    if (s == 7) return oss_lists[7].data[i];
-#endif
-    return oss_lists[0].data[i];
+    return oss_listData4(s, i >> 2u)[i & 3u];
 }
 
-vec4 oss_listVec4(int s, uint i)
+// The first node + 1 (0: none) and the length of the list of the texel under p (length 0
+// outside the grid).
+uint oss_listHead(int s, vec2 p, uint grid, out uint count)
 {
-#if OSS_MAX_LIST_SLOTS > 1
-    if (s == 1) return uintBitsToFloat(oss_lists4[1].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 2
-    if (s == 2) return uintBitsToFloat(oss_lists4[2].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 3
-    if (s == 3) return uintBitsToFloat(oss_lists4[3].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 4
-    if (s == 4) return uintBitsToFloat(oss_lists4[4].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 5
-    if (s == 5) return uintBitsToFloat(oss_lists4[5].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 6
-    if (s == 6) return uintBitsToFloat(oss_lists4[6].data4[i]);
-#endif
-#if OSS_MAX_LIST_SLOTS > 7
-    if (s == 7) return uintBitsToFloat(oss_lists4[7].data4[i]);
-#endif
-    return uintBitsToFloat(oss_lists4[0].data4[i]);
-}
-
-// The first node and the length of the list of the texel under p (length 0 outside the grid).
-uint oss_listHead(int s, vec2 p, out uint count)
-{
-    uint head = 0xffffffffu;
-    count = 0u;
-    for (int k = 0; k < OSS_MAX_LIST_SLOTS; ++k)
-        if (k == s)
-        {
-            ivec2 size = textureSize(oss_listHeads[k], 0);
-            vec2 t = floor(p * vec2(size));
-            if (all(greaterThanEqual(t, vec2(0.0))) && all(lessThan(t, vec2(size))))
-            {
-                head = texelFetch(oss_listHeads[k], ivec2(t), 0).r;
-                count = texelFetch(oss_listCounts[k], ivec2(t), 0).r;
-            }
-        }
-    return head;
+    vec2 t = floor(p * float(grid));
+    bool inside = all(greaterThanEqual(t, vec2(0.0))) && all(lessThan(t, vec2(float(grid))));
+    uint texel = inside ? uint(t.y) * grid + uint(t.x) : 0u;
+    uint head = oss_listData(s, 4u + texel);
+    count = inside ? oss_listData(s, 4u + grid * grid + texel) : 0u;
+    return inside ? head : 0u;
 }
 
 // 1 lit, 0 shadowed, -1 when the lists overflowed this frame (then the caller falls back).
 // Written as data flow, not early returns: SIMD rasterizers (llvmpipe) run a loop as long as
-// any lane of the block needs it, so a lane that does not walk must have a count of 0.
+// any lane of the block needs it, so a lane that does not walk must have a count of 0. The
+// buffer is read only by the lanes that walk (the loads sit behind the branch).
 float oss_listWalk(int s, vec2 p, float q, bool walk)
 {
-    uvec2 capacity = oss_listCapacity[s];
-    bool overflow = oss_listData(s, 0u) > capacity.x || oss_listData(s, 1u) > capacity.y;
-    uint count;
-    uint node = oss_listHead(s, p, count);
-    count = walk && !overflow ? count : 0u;
-    float limit = q - (1e-4 + 1e-4 * abs(q)); // a triangle through the point itself does not count
-    uint triangles = (4u + 2u * capacity.x) / 4u; // in vec4s
-    float lit = 1.0;
-    for (uint steps = 0u; steps < count && node < capacity.x; ++steps)
+    uvec4 capacity = oss_listCapacity[s];
+    uint grid = capacity.z;
+    bool overflow = false;
+    uint count = 0u, node = 0u;
+    if (walk)
     {
-        uint b = triangles + 3u * oss_listData(s, 4u + 2u * node);
-        node = oss_listData(s, 5u + 2u * node);
-        vec4 a = oss_listVec4(s, b), c = oss_listVec4(s, b + 1u);
-        float q2 = oss_listVec4(s, b + 2u).x;
+        uvec4 header = oss_listData4(s, 0u);
+        overflow = header.x > capacity.x || header.y > capacity.y;
+        node = oss_listHead(s, p, grid, count);
+        count = overflow ? 0u : count;
+    }
+    float limit = q - (1e-4 + 1e-4 * abs(q)); // a triangle through the point itself does not count
+    uint nodes = (4u + 2u * grid * grid) / 4u;    // in vec4s: two nodes each
+    uint triangles = nodes + capacity.x / 2u;
+    float lit = 1.0;
+    for (uint steps = 0u; steps < count && node != 0u && node <= capacity.x; ++steps)
+    {
+        uint n = node - 1u;
+        uvec4 pair = oss_listData4(s, nodes + (n >> 1u));
+        uvec2 entry = (n & 1u) != 0u ? pair.zw : pair.xy; // (triangle, next node + 1)
+        node = entry.y;
+        uint b = triangles + 3u * entry.x;
+        vec4 a = uintBitsToFloat(oss_listData4(s, b)), c = uintBitsToFloat(oss_listData4(s, b + 1u));
+        float q2 = uintBitsToFloat(oss_listData4(s, b + 2u).x);
         vec2 e1 = a.zw - a.xy, e2 = c.xy - a.xy, d = p - a.xy;
         float det = e1.x * e2.y - e1.y * e2.x;
         float u = (d.x * e2.y - d.y * e2.x) / det, v = (e1.x * d.y - e1.y * d.x) / det;
@@ -134,18 +128,62 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
     return overflow ? -1.0 : lit;
 }
 
-// The shadow term of slot s given its 2x2 PCF: exact at silhouette pixels, pcf elsewhere.
-float oss_listTerm(int s, float pcf, vec4 eyePosition)
+#ifdef OSS_HYBRID_EDGES
+// Each slot's edge mask: its silhouette map (oss_silmap.*.glsl, on the dual grid of the
+// depth map), drawn from the light's silhouette edges, occluded ones left out. A texel holding
+// a point other than its centre is touched by an edge: the shadow boundary may cross the
+// square between its four depth samples although they agree (a caster or a gap thinner
+// than a texel), so the pixel is resolved by its lists as well.
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
+const float OSS_DEFAULT_SILHOUETTE_POINT = 1024.0 * 4096.0 + 1024.0; // encodeSilhouettePoint(0.5, 0.5)
+#endif
+
+// Whether slot s cannot trust its 2x2 PCF at light texture-space point p: the PCF lies
+// strictly between 0 and 1 (Chan and Durand's silhouette pixels), or an edge touches the
+// square of the four depth samples around p (OSS_HYBRID_EDGES).
+bool oss_listUncertain(int s, float pcf, vec2 p)
 {
-    if (s >= OSS_MAX_LIST_SLOTS) return pcf;
-    bool silhouette = pcf > 0.0 && pcf < 1.0;
+    bool uncertain = pcf > 0.0 && pcf < 1.0;
+#ifdef OSS_HYBRID_EDGES
+    vec2 size = vec2(textureSize(oss_silhouetteMap[s], 0));
+    vec2 texel = floor(p * size - 0.5); // the dual-grid texel whose corners are those samples
+    float point = texture(oss_silhouetteMap[s], (texel + 0.5) / size).r; // border: the centre
+    uncertain = uncertain || point != OSS_DEFAULT_SILHOUETTE_POINT;
+#endif
+    return uncertain;
+}
+
+// Slot s's light texture-space point of an eye-space position (x, y), its depth in the
+// lists' terms (z), and whether it lies in front of a perspective light (w).
+vec4 oss_listPoint(int s, vec4 eyePosition)
+{
     vec4 c = oss_eyeToShadow[s] * eyePosition;
     bool front = c.w > 0.0;
     vec3 p = c.xyz / (front ? c.w : 1.0);
     float q = oss_listSlotPerspective[s] != 0 ? -1.0 / (front ? c.w : 1.0) : p.z;
-    float lit = oss_listWalk(s, p.xy, q, silhouette && front);
-    lit = front ? lit : 1.0;
-    return silhouette ? (lit < 0.0 ? step(0.5, pcf) : lit) : pcf;
+    return vec4(p.xy, q, front ? 1.0 : 0.0);
+}
+
+// The shadow term of slot s given its 2x2 PCF: exact where the PCF cannot be trusted
+// (oss_listUncertain), the PCF elsewhere (and where `walk` is false: the caller does not
+// need the exact answer there).
+float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk)
+{
+    if (s >= OSS_MAX_LIST_SLOTS) return pcf;
+    vec4 p = oss_listPoint(s, eyePosition);
+    bool front = p.w > 0.0;
+    bool uncertain = front && oss_listUncertain(s, pcf, p.xy);
+    float lit = oss_listWalk(s, p.xy, p.z, walk && uncertain);
+    lit = walk && front ? lit : pcf;
+    return uncertain ? (lit < 0.0 ? step(0.5, pcf) : lit) : pcf;
+}
+
+// Whether oss_listTerm() resolves slot s exactly at this position (DEBUG_CLASSES).
+bool oss_listResolves(int s, float pcf, vec4 eyePosition)
+{
+    if (s >= OSS_MAX_LIST_SLOTS) return false;
+    vec4 p = oss_listPoint(s, eyePosition);
+    return p.w > 0.0 && oss_listUncertain(s, pcf, p.xy);
 }
 
 #else

@@ -51,4 +51,6 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
         ADD_ENUM_VALUE(HYBRID_STENCIL_VOLUMES);
         ADD_ENUM_VALUE(HYBRID_TRIANGLE_LISTS);
     END_ENUM_SERIALIZER();
+
+    OSS_ADD_PROPERTY(bool, HybridEdgeMask, true);
 }

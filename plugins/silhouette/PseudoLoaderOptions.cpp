@@ -119,12 +119,13 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
             t.setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
         else warnValue(key, value, "is not auto, stencil or lists; ignored");
     }
-    else if (k == "usedefaultshading" || k == "blockerculling")
+    else if (k == "usedefaultshading" || k == "blockerculling" || k == "hybridedgemask")
     {
         bool flag = true;
         if (!parseBool(value, flag)) warnValue(key, value, "is not on/off; ignored");
         else if (k == "usedefaultshading") t.setUseDefaultShading(flag);
-        else t.setBlockerCulling(flag);
+        else if (k == "blockerculling") t.setBlockerCulling(flag);
+        else t.setHybridEdgeMask(flag);
     }
     else return false;
     return true;
@@ -149,6 +150,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
         {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
+        {"HybridEdgeMask=<on|off>", "HYBRID with lists: also resolve the pixels a silhouette edge crosses"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

@@ -53,6 +53,7 @@ inline const std::vector<PropertyRow>& propertyRows()
         OSS_PROPERTY_ROW(DebugLight, 2u),
         OSS_PROPERTY_ROW(BlockerCulling, false),
         OSS_PROPERTY_ROW(HybridMethod, Technique::HYBRID_TRIANGLE_LISTS),
+        OSS_PROPERTY_ROW(HybridEdgeMask, false),
     };
     return rows;
 }

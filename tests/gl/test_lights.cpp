@@ -389,3 +389,29 @@ TEST(PointLightAmidCasters, SharesTheSlotsWithOtherLights)
     EXPECT_EQ(r.technique->getStatistics().shadowPasses, 3u);
     EXPECT_LT(compare(r, 1).wrongPct, MODES[0].bound(LightType::DIRECTIONAL)) << "the other lights keep their shadows";
 }
+
+// HYBRID's triangle lists take one shader storage block per slot and no texture unit, so
+// every slot can have them: five point lights whose cube faces fill all 12 slots are still
+// resolved with lists (no fallback to stencil volumes, no warning), each light as exact as
+// the single-light bound of its type.
+TEST(HybridTriangleLists, EveryCubeFaceHasLists)
+{
+    osstest::NotifyCapture warnings;
+    ShadowedRender r(optionsWith(LightType::POINT, 5), "hybrid", 512, W, H);
+    ASSERT_TRUE(r.valid());
+    r.technique->setMaxShadowLights(5);
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    r.renderer->timeFrames(0, 3);
+    const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
+    EXPECT_TRUE(s.triangleLists) << "this machine's GL is 4.5";
+    EXPECT_GT(s.shadowPasses, 6u) << "more slots than the 6 that texture units allowed the lists before";
+    EXPECT_EQ(s.zfailCasters + s.zpassCasters, 0u) << "no shadow volumes drawn";
+    EXPECT_EQ(occurrences(warnings, "triangle lists hold"), 0);
+    const ModeBound& hybrid = MODES[2];
+    for (int i = 0; i < 5; ++i)
+    {
+        const ossref::Comparison c = compare(r, i);
+        std::cout << "wrong_pct hybrid lists point lights=5 light=" << i << " " << c.wrongPct << "\n";
+        EXPECT_LT(c.wrongPct, hybrid.bound(LightType::POINT)) << "light " << i;
+    }
+}
