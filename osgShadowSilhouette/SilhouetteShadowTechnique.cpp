@@ -693,7 +693,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.slotInUse[slot] = false;
     }
     // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too).
-    const bool edgeMasks = frame.triangleLists && _hybridEdgeMask;
+    const bool edgeMasks = frame.mode == HYBRID && _hybridEdgeMask;
     bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
     if (edgeMasks)
         vd.receiverStateSet->setDefine(shader::DEFINE_HYBRID_EDGES);
@@ -836,8 +836,11 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
     vd.slotInUse[slot] = true;
     // Blocker culling tests casters against this map alone: not for a cube face, which sees
-    // only part of the light's casters; triangle lists need no volumes to skip.
-    const bool blockers = frame.mode == HYBRID && _blockerCulling && !frame.triangleLists && frustum.faceCore == 0.0;
+    // only part of the light's casters; triangle lists need no volumes to skip; and not with
+    // the edge mask: a caster the map's samples call hidden may still shadow what shows
+    // through gaps thinner than a texel, which is what the edge mask resolves.
+    const bool blockers = frame.mode == HYBRID && _blockerCulling && !_hybridEdgeMask && !frame.triangleLists &&
+                          frustum.faceCore == 0.0;
     if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
     if (!blockers) pass.blockers = nullptr;
     if (blockers) pass.blockers->update(frame.casterList);
@@ -850,11 +853,8 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     cullLightPasses(cv, pass, frame, light, stats);
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
                                                      osg::StateAttribute::ON);
-    if (frame.triangleLists)
-    {
-        cullTriangleListPass(cv, vd, pass, slot, frame, light);
-        if (_hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
-    }
+    if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
+    if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     if (!silhouette) return;
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());

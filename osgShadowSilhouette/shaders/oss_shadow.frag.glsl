@@ -9,7 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -93,6 +93,32 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 #endif
 }
 
+#if defined(OSS_HYBRID_EDGES) && !defined(OSS_SILHOUETTE_MAP)
+// HYBRID's edge mask of each slot: its silhouette map (oss_silmap.*.glsl, on the dual grid of
+// the depth map), drawn from the light's silhouette edges, occluded ones left out. A texel
+// holding a point other than its centre is touched by an edge: the shadow boundary may pass
+// between its four depth samples although they agree (a caster or a gap thinner than a
+// texel), so its pixels are resolved exactly (lists or volumes) as well.
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
+const float OSS_DEFAULT_SILHOUETTE_POINT = 1024.0 * 4096.0 + 1024.0; // encodeSilhouettePoint(0.5, 0.5)
+
+// Whether an edge crosses the square of slot s's four depth samples around light
+// texture-space point p.
+bool oss_slotEdge(int s, vec2 p)
+{
+    vec2 size = vec2(textureSize(oss_silhouetteMap[s], 0));
+    vec2 texel = floor(p * size - 0.5); // the dual-grid texel whose corners are those samples
+    return texture(oss_silhouetteMap[s], (texel + 0.5) / size).r != OSS_DEFAULT_SILHOUETTE_POINT; // border: the centre
+}
+
+// The same at an eye-space position (false behind a perspective light).
+bool oss_slotEdgeAt(int s, vec4 eyePosition)
+{
+    vec4 c = oss_eyeToShadow[s] * eyePosition;
+    return c.w > 0.0 && oss_slotEdge(s, c.xy / c.w);
+}
+#endif
+
 #ifndef OSS_SILHOUETTE_MAP
 // The 2x2 PCF of the light of shadow slot `slot` (HYBRID's mask and light passes): its own
 // map's, or the product of its cube faces'.
@@ -158,6 +184,58 @@ float oss_lightPcf(int slot, vec4 eyePosition)
             return OSS_PCF_TERM(s, eyePosition);
     return 1.0;
 #endif
+}
+#endif
+
+#if defined(OSS_HYBRID_EDGES) && !defined(OSS_SILHOUETTE_MAP) && defined(OSS_LIGHT_FACES)
+// Whether the edge mask of the light of shadow slot `slot` (HYBRID's stencil mask pass)
+// marks an eye-space position: its own slot's, or that of the cube face whose own directions
+// hold it, among the slots named by OSS_LIGHT_FACES.
+bool oss_lightEdges(int slot, vec4 eyePosition)
+{
+    bool edge = false;
+#ifdef OSS_CUBE_FACES
+#define OSS_FACE_EDGE(s) (oss_faceGate(s, eyePosition, 0.0) == 0.0 && oss_slotEdgeAt(s, eyePosition))
+#else
+#define OSS_FACE_EDGE(s) oss_slotEdgeAt(s, eyePosition)
+#endif
+#if OSS_HAS_FACE(0)
+    edge = edge || OSS_FACE_EDGE(0);
+#endif
+#if OSS_HAS_FACE(1)
+    edge = edge || OSS_FACE_EDGE(1);
+#endif
+#if OSS_HAS_FACE(2)
+    edge = edge || OSS_FACE_EDGE(2);
+#endif
+#if OSS_HAS_FACE(3)
+    edge = edge || OSS_FACE_EDGE(3);
+#endif
+#if OSS_HAS_FACE(4)
+    edge = edge || OSS_FACE_EDGE(4);
+#endif
+#if OSS_HAS_FACE(5)
+    edge = edge || OSS_FACE_EDGE(5);
+#endif
+#if OSS_HAS_FACE(6)
+    edge = edge || OSS_FACE_EDGE(6);
+#endif
+#if OSS_HAS_FACE(7)
+    edge = edge || OSS_FACE_EDGE(7);
+#endif
+#if OSS_HAS_FACE(8)
+    edge = edge || OSS_FACE_EDGE(8);
+#endif
+#if OSS_HAS_FACE(9)
+    edge = edge || OSS_FACE_EDGE(9);
+#endif
+#if OSS_HAS_FACE(10)
+    edge = edge || OSS_FACE_EDGE(10);
+#endif
+#if OSS_HAS_FACE(11)
+    edge = edge || OSS_FACE_EDGE(11);
+#endif
+    return edge; // slots 0-11: shader::MAX_SHADOW_SLOTS
 }
 #endif
 

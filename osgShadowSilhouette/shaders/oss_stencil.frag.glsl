@@ -19,7 +19,7 @@
 // write the class colours (oss_classColor()): black base, green where the volumes leave the
 // light, red / blue where HYBRID's shadow map answers lit / shadowed.
 
-#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK, OSS_HYBRID_EDGES)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -40,6 +40,9 @@ uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 uniform sampler2DShadow oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 
 float oss_lightPcf(int slot, vec4 eyePosition);
+#if defined(OSS_HYBRID_MASK) && defined(OSS_HYBRID_EDGES)
+bool oss_lightEdges(int slot, vec4 eyePosition); // the light's edge mask (oss_shadow.frag.glsl)
+#endif
 
 bool oss_facesLight(int n, vec3 p);
 vec4 oss_classColor(bool silhouette, bool lit);
@@ -72,7 +75,11 @@ void main()
 {
 #if defined(OSS_HYBRID_MASK)
     float pcf = oss_lightPcf(OSS_HYBRID_MASK, oss_eyePosition);
-    if (!(pcf > 0.0 && pcf < 1.0) || !oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz))
+    bool uncertain = pcf > 0.0 && pcf < 1.0;
+#ifdef OSS_HYBRID_EDGES
+    uncertain = uncertain || oss_lightEdges(OSS_HYBRID_MASK, oss_eyePosition);
+#endif
+    if (!uncertain || !oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz))
         discard;
     gl_FragColor = vec4(0.0);
 #elif defined(OSS_LIGHT_PASS)

@@ -129,13 +129,9 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
 }
 
 #ifdef OSS_HYBRID_EDGES
-// Each slot's edge mask: its silhouette map (oss_silmap.*.glsl, on the dual grid of the
-// depth map), drawn from the light's silhouette edges, occluded ones left out. A texel holding
-// a point other than its centre is touched by an edge: the shadow boundary may cross the
-// square between its four depth samples although they agree (a caster or a gap thinner
-// than a texel), so the pixel is resolved by its lists as well.
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
-const float OSS_DEFAULT_SILHOUETTE_POINT = 1024.0 * 4096.0 + 1024.0; // encodeSilhouettePoint(0.5, 0.5)
+// Whether an edge of slot s's edge mask crosses the square of its four depth samples around
+// p (oss_shadow.frag.glsl).
+bool oss_slotEdge(int s, vec2 p);
 #endif
 
 // Whether slot s cannot trust its 2x2 PCF at light texture-space point p: the PCF lies
@@ -145,10 +141,7 @@ bool oss_listUncertain(int s, float pcf, vec2 p)
 {
     bool uncertain = pcf > 0.0 && pcf < 1.0;
 #ifdef OSS_HYBRID_EDGES
-    vec2 size = vec2(textureSize(oss_silhouetteMap[s], 0));
-    vec2 texel = floor(p * size - 0.5); // the dual-grid texel whose corners are those samples
-    float point = texture(oss_silhouetteMap[s], (texel + 0.5) / size).r; // border: the centre
-    uncertain = uncertain || point != OSS_DEFAULT_SILHOUETTE_POINT;
+    uncertain = uncertain || oss_slotEdge(s, p);
 #endif
     return uncertain;
 }

@@ -150,7 +150,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
         {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
-        {"HybridEdgeMask=<on|off>", "HYBRID with lists: also resolve the pixels a silhouette edge crosses"},
+        {"HybridEdgeMask=<on|off>", "HYBRID: also resolve exactly the pixels a silhouette edge crosses"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

@@ -96,6 +96,7 @@ TEST(HybridStatistics, BlockerCullingSkipsHiddenCastersAndKeepsThePicture)
     ShadowedRender r("cubes", "hybrid", 1024, W, H);
     ASSERT_TRUE(r.valid());
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES); // the mask pass is counted
+    r.technique->setHybridEdgeMask(false); // culling is for the PCF test alone (below)
     r.technique->setBlockerCulling(false);
     const ossref::Mask without = r.mask(0, 4);
     const SilhouetteShadowTechnique::Statistics off = r.technique->getStatistics();
@@ -117,6 +118,13 @@ TEST(HybridStatistics, BlockerCullingSkipsHiddenCastersAndKeepsThePicture)
     const ossref::Comparison c = ossref::compareMasks(with, without);
     ASSERT_TRUE(c.valid) << c.error;
     EXPECT_LE(c.wrongPct, 0.005) << "skipping hidden casters must not change the shadows";
+
+    // With the edge mask no caster is skipped: one seen only through gaps thinner than a
+    // texel still shadows what the mask sends to the volumes.
+    r.technique->setHybridEdgeMask(true);
+    settle(r);
+    EXPECT_EQ(r.technique->getStatistics().blockersTested, 0u);
+    EXPECT_EQ(r.technique->getStatistics().blockersSkipped, 0u);
 }
 
 TEST(HybridStatistics, StatisticsReachAnOsgStats)
