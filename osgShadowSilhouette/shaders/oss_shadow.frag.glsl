@@ -187,12 +187,18 @@ float oss_lightPcf(int slot, vec4 eyePosition)
 }
 #endif
 
-#if defined(OSS_HYBRID_EDGES) && !defined(OSS_SILHOUETTE_MAP) && defined(OSS_LIGHT_FACES)
+#if defined(OSS_HYBRID_EDGES) && !defined(OSS_SILHOUETTE_MAP)
 // Whether the edge mask of the light of shadow slot `slot` (HYBRID's stencil mask pass)
 // marks an eye-space position: its own slot's, or that of the cube face whose own directions
-// hold it, among the slots named by OSS_LIGHT_FACES.
+// hold it, among the slots named by OSS_LIGHT_FACES (without it: slot `slot`'s alone).
 bool oss_lightEdges(int slot, vec4 eyePosition)
 {
+#ifndef OSS_LIGHT_FACES
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (s == slot)
+            return oss_slotEdgeAt(s, eyePosition);
+    return false;
+#else
     bool edge = false;
 #ifdef OSS_CUBE_FACES
 #define OSS_FACE_EDGE(s) (oss_faceGate(s, eyePosition, 0.0) == 0.0 && oss_slotEdgeAt(s, eyePosition))
@@ -236,6 +242,7 @@ bool oss_lightEdges(int slot, vec4 eyePosition)
     edge = edge || OSS_FACE_EDGE(11);
 #endif
     return edge; // slots 0-11: shader::MAX_SHADOW_SLOTS
+#endif
 }
 #endif
 
