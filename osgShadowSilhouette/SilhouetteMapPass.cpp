@@ -4,6 +4,8 @@
 
 #include "ShaderSource.h"
 
+#include <osg/BlendEquation>
+#include <osg/BlendFunc>
 #include <osg/Geode>
 #include <osg/Image>
 #include <osgUtil/CullVisitor>
@@ -111,10 +113,23 @@ void SilhouetteMapPass::setDepthComparison(bool compare)
 {
     if (compare == _depthComparison) return;
     _depthComparison = compare;
+    osg::StateSet* ss = _camera->getStateSet();
+    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
     if (compare)
-        _camera->getStateSet()->setDefine(shader::DEFINE_SILMAP_COMPARE);
+    {
+        // HYBRID's edge mask: each texel keeps the nearest edge depth (the clear value, the
+        // default point, is far beyond any depth in [0, 1]).
+        ss->setDefine(shader::DEFINE_SILMAP_COMPARE);
+        ss->setAttributeAndModes(new osg::BlendEquation(osg::BlendEquation::RGBA_MIN), overrideOn);
+        ss->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), overrideOn);
+    }
     else
-        _camera->getStateSet()->removeDefine(shader::DEFINE_SILMAP_COMPARE);
+    {
+        ss->removeDefine(shader::DEFINE_SILMAP_COMPARE);
+        ss->removeAttribute(osg::StateAttribute::BLENDEQUATION);
+        ss->removeAttribute(osg::StateAttribute::BLENDFUNC);
+        ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    }
 }
 
 void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustum, osg::Texture2D* depthTexture,

@@ -94,28 +94,28 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 }
 
 #if defined(OSS_HYBRID_EDGES) && !defined(OSS_SILHOUETTE_MAP)
-// HYBRID's edge mask of each slot: its silhouette map (oss_silmap.*.glsl, on the dual grid of
-// the depth map), drawn from the light's silhouette edges, occluded ones left out. A texel
-// holding a point other than its centre is touched by an edge: the shadow boundary may pass
-// between its four depth samples although they agree (a caster or a gap thinner than a
-// texel), so its pixels are resolved exactly (lists or volumes) as well.
+// HYBRID's edge mask of each slot: a silhouette map (oss_silmap.*.glsl, on the dual grid of
+// the depth map) drawn from the light's silhouette edges, occluded ones left out, each texel
+// holding the nearest depth an edge crossing it reaches (MIN blending; cleared far). Where an
+// edge crosses the square of the four depth samples around a point and lies in front of it,
+// the shadow boundary may pass between the samples although they agree (a caster or a gap
+// thinner than a texel), so the point is resolved exactly (lists or volumes) as well.
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
-const float OSS_DEFAULT_SILHOUETTE_POINT = 1024.0 * 4096.0 + 1024.0; // encodeSilhouettePoint(0.5, 0.5)
 
-// Whether an edge crosses the square of slot s's four depth samples around light
-// texture-space point p.
-bool oss_slotEdge(int s, vec2 p)
+// Whether an edge in front of light texture-space point p (x, y, window depth z) crosses the
+// square of slot s's four depth samples around it.
+bool oss_slotEdge(int s, vec3 p)
 {
     vec2 size = vec2(textureSize(oss_silhouetteMap[s], 0));
-    vec2 texel = floor(p * size - 0.5); // the dual-grid texel whose corners are those samples
-    return texture(oss_silhouetteMap[s], (texel + 0.5) / size).r != OSS_DEFAULT_SILHOUETTE_POINT; // border: the centre
+    vec2 texel = floor(p.xy * size - 0.5); // the dual-grid texel whose corners are those samples
+    return texture(oss_silhouetteMap[s], (texel + 0.5) / size).r < p.z; // border and clear: far
 }
 
 // The same at an eye-space position (false behind a perspective light).
 bool oss_slotEdgeAt(int s, vec4 eyePosition)
 {
     vec4 c = oss_eyeToShadow[s] * eyePosition;
-    return c.w > 0.0 && oss_slotEdge(s, c.xy / c.w);
+    return c.w > 0.0 && oss_slotEdge(s, c.xyz / c.w);
 }
 #endif
 

@@ -9,6 +9,8 @@
 //   4. none: discard (the thin quad also covers texels the edge misses).
 // Then discards the edge where it lies behind all four neighbouring depth samples (an
 // occluded silhouette), and writes the point in the texel's local coordinates.
+// HYBRID's edge mask (OSS_SILMAP_COMPARE) writes a depth instead, blended by MIN: the nearest
+// the edges crossing the texel come to the light anywhere in it (docs/shadow-volumes.md).
 // The C++ twin is pickSilhouettePoint() in osgShadowSilhouette/SilhouettePoints; keep
 // them identical (tests/gl/test_silhouette_map.cpp compares them).
 
@@ -24,6 +26,7 @@ uniform float oss_silmapDepthBias;       // slack of the occlusion test, in [0, 
 
 flat in vec4 oss_edge;
 flat in vec2 oss_edgeDepth;
+flat in float oss_edgeDepthSlope;
 
 float oss_cross(vec2 a, vec2 b)
 {
@@ -90,6 +93,12 @@ void main()
     vec4 front = textureGather(oss_silmapDepth, (texel + 1.0) / size, depth - oss_silmapDepthBias);
     if (all(equal(front, vec4(0.0))))
         discard;
+    // The nearest the edge comes to the light anywhere in the texel: its depth at the picked
+    // point less its change along a texel diagonal (sqrt(2) texels, with margin). The eye pass
+    // counts the edge only at points behind that depth: a convex caster's own rim, which lies
+    // behind the lit face beside it, then no longer sends that face to the exact test.
+    gl_FragColor = vec4(depth - 1.5 * oss_edgeDepthSlope, 0.0, 0.0, 1.0);
+    return;
 #else
     vec4 samples = textureGather(oss_silmapDepth, (texel + 1.0) / size);
     if (all(greaterThan(vec4(depth - oss_silmapDepthBias), samples)))

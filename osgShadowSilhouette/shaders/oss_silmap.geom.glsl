@@ -24,6 +24,7 @@ uniform sampler2D oss_silmapDepth;       // the light's depth map (its size is t
 
 flat out vec4 oss_edge;      // endpoints a.xy, b.xy in silhouette-map window coordinates
 flat out vec2 oss_edgeDepth; // window depths of a and b, in [0, 1]
+flat out float oss_edgeDepthSlope; // |change of window depth| per texel along the edge
 
 // The edge's part in front of the light's eye plane (w > 0).
 bool oss_clipToFront(inout vec4 a, inout vec4 b)
@@ -42,6 +43,7 @@ void oss_emit(vec2 window, vec2 size, vec4 edge, vec2 depth)
 {
     oss_edge = edge;
     oss_edgeDepth = depth;
+    oss_edgeDepthSlope = abs(depth.y - depth.x) / max(length(edge.zw - edge.xy), 1e-6);
     gl_Position = vec4(window / size * 2.0 - 1.0, 0.0, 1.0);
     EmitVertex();
 }

@@ -129,19 +129,19 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
 }
 
 #ifdef OSS_HYBRID_EDGES
-// Whether an edge of slot s's edge mask crosses the square of its four depth samples around
-// p (oss_shadow.frag.glsl).
-bool oss_slotEdge(int s, vec2 p);
+// Whether an edge of slot s's edge mask in front of eye-space position `eyePosition` crosses
+// the square of its four depth samples around it (oss_shadow.frag.glsl).
+bool oss_slotEdgeAt(int s, vec4 eyePosition);
 #endif
 
-// Whether slot s cannot trust its 2x2 PCF at light texture-space point p: the PCF lies
+// Whether slot s cannot trust its 2x2 PCF at an eye-space position: the PCF lies
 // strictly between 0 and 1 (Chan and Durand's silhouette pixels), or an edge touches the
-// square of the four depth samples around p (OSS_HYBRID_EDGES).
-bool oss_listUncertain(int s, float pcf, vec2 p)
+// square of the four depth samples around it in front of it (OSS_HYBRID_EDGES).
+bool oss_listUncertain(int s, float pcf, vec4 eyePosition)
 {
     bool uncertain = pcf > 0.0 && pcf < 1.0;
 #ifdef OSS_HYBRID_EDGES
-    uncertain = uncertain || oss_slotEdge(s, p);
+    uncertain = uncertain || oss_slotEdgeAt(s, eyePosition);
 #endif
     return uncertain;
 }
@@ -165,7 +165,7 @@ float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk)
     if (s >= OSS_MAX_LIST_SLOTS) return pcf;
     vec4 p = oss_listPoint(s, eyePosition);
     bool front = p.w > 0.0;
-    bool uncertain = front && oss_listUncertain(s, pcf, p.xy);
+    bool uncertain = front && oss_listUncertain(s, pcf, eyePosition);
     float lit = oss_listWalk(s, p.xy, p.z, walk && uncertain);
     lit = walk && front ? lit : pcf;
     return uncertain ? (lit < 0.0 ? step(0.5, pcf) : lit) : pcf;
@@ -176,7 +176,7 @@ bool oss_listResolves(int s, float pcf, vec4 eyePosition)
 {
     if (s >= OSS_MAX_LIST_SLOTS) return false;
     vec4 p = oss_listPoint(s, eyePosition);
-    return p.w > 0.0 && oss_listUncertain(s, pcf, p.xy);
+    return p.w > 0.0 && oss_listUncertain(s, pcf, eyePosition);
 }
 
 #else
