@@ -15,6 +15,7 @@
 #include <osgUtil/RenderStage>
 
 #include <algorithm>
+#include <unordered_set>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -57,6 +58,27 @@ void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable
     for (auto& nested : bin.getRenderBinList()) removeLeaves(*nested.second, drawables);
 }
 
+/** Moves the leaves of @p drawables under their state graph's child of @p ss (added to @p bin
+ *  where new this frame): draws of those drawables that also apply @p ss. */
+void moveLeaves(osgUtil::RenderBin& bin, const std::unordered_set<const osg::Drawable*>& drawables, osg::StateSet* ss)
+{
+    const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
+    for (osgUtil::StateGraph* graph : graphs)
+    {
+        if (graph->getStateSet() == ss) continue;
+        auto& leaves = graph->_leaves;
+        const auto moved = std::stable_partition(leaves.begin(), leaves.end(), [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
+            return drawables.count(leaf->getDrawable()) == 0;
+        });
+        if (moved == leaves.end()) continue;
+        osgUtil::StateGraph* child = graph->find_or_insert(ss);
+        if (child->_leaves.empty()) bin.addStateGraph(child); // state graphs outlive frames, their leaves do not
+        for (auto it = moved; it != leaves.end(); ++it) child->addLeaf(it->get());
+        leaves.erase(moved, leaves.end());
+    }
+    for (auto& nested : bin.getRenderBinList()) moveLeaves(*nested.second, drawables, ss);
+}
+
 /** The cull callback of a light-space camera (depth pass, triangle lists): culls the
  *  shadowed scene's casters into the camera's own render stage, leaving out the geometry
  *  with non-finite vertices, then the camera's own children. With setCasters(false) only
@@ -67,6 +89,12 @@ public:
     explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
     void setCasters(bool flag) { _casters = flag; }
     void setExcluded(const std::vector<const osg::Drawable*>& drawables) { _excluded = drawables; }
+    /** The draws of @p drawables also apply @p ss (the triangle lists' closed casters). */
+    void setMarked(std::unordered_set<const osg::Drawable*> drawables, osg::StateSet* ss)
+    {
+        _marked = std::move(drawables);
+        _markedStateSet = ss;
+    }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
         if (_scene && _casters)
@@ -74,6 +102,8 @@ public:
             _scene->osg::Group::traverse(*nv);
             osgUtil::CullVisitor* cv = nv->asCullVisitor();
             if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
+            if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
+                moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
         }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
@@ -82,6 +112,8 @@ private:
     osgShadow::ShadowedScene* _scene;
     bool _casters = true;
     std::vector<const osg::Drawable*> _excluded;
+    std::unordered_set<const osg::Drawable*> _marked;
+    osg::ref_ptr<osg::StateSet> _markedStateSet;
 };
 
 /** World bounds of the drawables under the traversal mask, leaving out (and listing) the
@@ -409,6 +441,8 @@ void SilhouetteShadowTechnique::init()
     osg::ref_ptr<osg::Shader> listTerm = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
     _receiverProgram->addShader(listTerm.get());
     _listStateSet = TriangleListPass::createSharedStateSet();
+    _listFrontOnlyStateSet = new osg::StateSet;
+    _listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
     _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
     _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
     _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
@@ -939,7 +973,13 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
     if (!(pass.listRendered == pass.rendered)) // the lists describe another depth map
     {
         if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.listPass->getCamera()->getCullCallback()))
+        {
             scene->setExcluded(frame.nonFinite);
+            std::unordered_set<const osg::Drawable*> closed;
+            for (const Caster& caster : frame.casterList)
+                if (caster.closed) closed.insert(caster.geometry.get());
+            scene->setMarked(std::move(closed), _listFrontOnlyStateSet.get());
+        }
         const unsigned int mask = cv.getTraversalMask();
         cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
         pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL);

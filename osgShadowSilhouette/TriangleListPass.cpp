@@ -178,6 +178,7 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
     ss->addUniform(new osg::Uniform(shader::LIST_TRIANGLE_CAPACITY, _triangleCapacity));
     ss->addUniform(new osg::Uniform(shader::LIST_GRID_SIZE, osg::Vec2f(grid, grid)));
     ss->addUniform(_perspective.get());
+    ss->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, false));
 }
 
 TriangleListPass::~TriangleListPass() = default;

@@ -12,6 +12,11 @@
 // of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
 // (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for a perspective one
 // (both grow away from the light and are linear in texture-space x, y).
+//
+// A closed caster (oss_listFrontOnly) lists only its triangles wound counter-clockwise in
+// the light's view: a shadow ray from outside that meets a closed surface crosses it once
+// each way, so one of the two orientations blocks every ray the caster blocks. The lists
+// are about half as long (mirroring transforms swap the two halves; either will do).
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
@@ -21,6 +26,7 @@ uniform uint oss_listNodeCapacity;
 uniform uint oss_listTriangleCapacity;
 uniform vec2 oss_listGridSize;
 uniform bool oss_listPerspective; // the light's projection
+uniform bool oss_listFrontOnly;   // a closed caster: counter-clockwise triangles only
 
 flat out uint oss_triangle;
 flat out vec2 oss_v0, oss_v1, oss_v2; // texture space
@@ -35,8 +41,11 @@ void main()
     if (any(greaterThan(lo, vec2(1.0))) || any(lessThan(hi, vec2(0.0))))
         return; // outside the map
     vec2 e1 = t1.xy - t0.xy, e2 = t2.xy - t0.xy;
-    if (e1.x * e2.y - e1.y * e2.x == 0.0)
+    float area = e1.x * e2.y - e1.y * e2.x;
+    if (area == 0.0)
         return; // edge-on to the light: blocks no ray of positive measure
+    if (oss_listFrontOnly && area < 0.0)
+        return; // the other side of a closed caster blocks the same rays
     uint index = atomicAdd(oss_list[1], 1u);
     if (index >= oss_listTriangleCapacity)
         return; // overflow: the eye pass sees the count and falls back to the shadow map
