@@ -327,8 +327,20 @@ void SilhouetteShadowTechnique::setShadowMapSize(unsigned int size)
 
 void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
 {
-    _polygonOffsetFactor = std::isfinite(factor) ? factor : 1.1f;
+    if (!std::isfinite(factor))
+    {
+        OSG_WARN << "osgShadowSilhouette: PolygonOffsetFactor " << factor
+                 << " is not a finite number; using the automatic factor" << std::endl;
+        factor = AUTOMATIC_POLYGON_OFFSET_FACTOR;
+    }
+    _polygonOffsetFactor = factor < 0.0f ? AUTOMATIC_POLYGON_OFFSET_FACTOR : factor;
     dirty();
+}
+
+float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode) const
+{
+    if (_polygonOffsetFactor >= 0.0f) return _polygonOffsetFactor;
+    return mode == HYBRID ? 2.0f : 1.1f;
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
@@ -481,7 +493,8 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet()
     program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
     program->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
     ss->setAttributeAndModes(program.get(), overrideOn);
-    ss->setAttributeAndModes(new osg::PolygonOffset(_polygonOffsetFactor, _polygonOffsetUnits), overrideOn);
+    ss->setAttributeAndModes(new osg::PolygonOffset(getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits),
+                             overrideOn); // each pass sets its mode's factor (cullLightPasses)
     ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
     ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE); // open casters too
     ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
@@ -923,6 +936,12 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
         stats.extractionsSkipped += silhouette ? 1 : 0;
         return;
     }
+    const float factor = getEffectivePolygonOffsetFactor(frame.mode);
+    osg::StateSet* depthState = pass.depthCamera->getStateSet(); // the pass's own (shallow) copy
+    const auto* offset = dynamic_cast<const osg::PolygonOffset*>(depthState->getAttribute(osg::StateAttribute::POLYGONOFFSET));
+    if (!offset || offset->getFactor() != factor || offset->getUnits() != _polygonOffsetUnits)
+        depthState->setAttributeAndModes(new osg::PolygonOffset(factor, _polygonOffsetUnits),
+                                         osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     cullDepthPass(cv, pass);
     ++stats.shadowPasses;
     pass.rendered = inputs;

@@ -28,7 +28,7 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
     END_ENUM_SERIALIZER();
 
     OSS_ADD_PROPERTY(unsigned int, ShadowMapSize, 2048u);
-    OSS_ADD_PROPERTY(float, PolygonOffsetFactor, 1.1f);
+    OSS_ADD_PROPERTY(float, PolygonOffsetFactor, -1.0f); // automatic
     OSS_ADD_PROPERTY(float, PolygonOffsetUnits, 4.0f);
     OSS_ADD_PROPERTY(int, LightNum, -1);
     OSS_ADD_PROPERTY(unsigned int, MaxShadowLights, 4u);

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <set>
 #include <unistd.h>
@@ -195,6 +196,26 @@ TEST_P(SceneRoundTrip, KeepsShadowSettingsMasksAndChildren)
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, SceneRoundTrip, ::testing::Values("osgt", "osgb", "osgx"));
+
+// PolygonOffsetFactor: negative (the default) picks the factor per mode; a value of one's
+// own applies to every mode.
+TEST(PolygonOffsetFactor, AutomaticCoversTheHybridsPcfFootprint)
+{
+    osg::ref_ptr<Technique> t = new Technique;
+    EXPECT_EQ(t->getPolygonOffsetFactor(), Technique::AUTOMATIC_POLYGON_OFFSET_FACTOR);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 2.0f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 1.1f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SILHOUETTE_MAP), 1.1f);
+    t->setPolygonOffsetFactor(0.5f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 0.5f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 0.5f);
+    t->setPolygonOffsetFactor(-3.0f);
+    EXPECT_EQ(t->getPolygonOffsetFactor(), Technique::AUTOMATIC_POLYGON_OFFSET_FACTOR);
+    NotifyCapture capture;
+    t->setPolygonOffsetFactor(std::numeric_limits<float>::infinity());
+    EXPECT_NE(capture.text().find("PolygonOffsetFactor inf is not a finite number"), std::string::npos) << capture.text();
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 2.0f);
+}
 
 TEST(Serializer, TextWritesEnumsByName)
 {
