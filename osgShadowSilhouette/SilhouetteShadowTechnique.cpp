@@ -340,7 +340,7 @@ void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
 float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode) const
 {
     if (_polygonOffsetFactor >= 0.0f) return _polygonOffsetFactor;
-    return mode == HYBRID ? 2.0f : 1.1f;
+    return mode == HYBRID && _hybridEdgeMask ? 2.0f : 1.1f;
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
@@ -918,6 +918,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     inputs.view = pass.frustum.view;
     inputs.projection = pass.frustum.projection;
     inputs.light = light.homogeneous();
+    inputs.polygonOffsetFactor = getEffectivePolygonOffsetFactor(frame.mode);
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     const bool reuse = inputs == pass.rendered &&
                        (!silhouette || (pass.silhouettePass && pass.silhouettePass->getMapSize() == _shadowMapSize));
@@ -936,7 +937,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
         stats.extractionsSkipped += silhouette ? 1 : 0;
         return;
     }
-    const float factor = getEffectivePolygonOffsetFactor(frame.mode);
+    const float factor = inputs.polygonOffsetFactor;
     osg::StateSet* depthState = pass.depthCamera->getStateSet(); // the pass's own (shallow) copy
     const auto* offset = dynamic_cast<const osg::PolygonOffset*>(depthState->getAttribute(osg::StateAttribute::POLYGONOFFSET));
     if (!offset || offset->getFactor() != factor || offset->getUnits() != _polygonOffsetUnits)

@@ -145,7 +145,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"LightNum=<n>", "GL light number that casts shadows; -1 shadows every light"},
         {"MaxShadowLights=<n>", "Most lights shadowed at once (1..8)"},
         {"BaseTextureUnit=<n>", "First texture unit of the shadow textures"},
-        {"PolygonOffsetFactor=<f>", "Slope-scaled depth bias (negative: automatic, 2 in HYBRID, else 1.1)"},
+        {"PolygonOffsetFactor=<f>", "Slope-scaled depth bias (negative: automatic, 2 in HYBRID with its edge mask, else 1.1)"},
         {"PolygonOffsetUnits=<f>", "Constant depth bias"},
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},

@@ -206,6 +206,9 @@ TEST(PolygonOffsetFactor, AutomaticCoversTheHybridsPcfFootprint)
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 2.0f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 1.1f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SILHOUETTE_MAP), 1.1f);
+    t->setHybridEdgeMask(false); // the larger bias leaks without the mask
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 1.1f);
+    t->setHybridEdgeMask(true);
     t->setPolygonOffsetFactor(0.5f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 0.5f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 0.5f);
