@@ -58,8 +58,21 @@ void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable
     for (auto& nested : bin.getRenderBinList()) removeLeaves(*nested.second, drawables);
 }
 
+/** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
+bool mirrors(const osgUtil::RenderLeaf& leaf)
+{
+    if (!leaf._modelview) return false;
+    const osg::Matrix& m = *leaf._modelview;
+    const double det = m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
+                       m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+                       m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+    return det < 0.0;
+}
+
 /** Moves the leaves of @p drawables under their state graph's child of @p ss (added to @p bin
- *  where new this frame): draws of those drawables that also apply @p ss. */
+ *  where new this frame): draws of those drawables that also apply @p ss. Mirrored draws stay
+ *  (the triangle lists: a mirror turns a closed caster's counter-clockwise half into the
+ *  half facing away from the light, which misses the rays leaving it from inside). */
 void moveLeaves(osgUtil::RenderBin& bin, const std::unordered_set<const osg::Drawable*>& drawables, osg::StateSet* ss)
 {
     const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
@@ -68,7 +81,7 @@ void moveLeaves(osgUtil::RenderBin& bin, const std::unordered_set<const osg::Dra
         if (graph->getStateSet() == ss) continue;
         auto& leaves = graph->_leaves;
         const auto moved = std::stable_partition(leaves.begin(), leaves.end(), [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
-            return drawables.count(leaf->getDrawable()) == 0;
+            return drawables.count(leaf->getDrawable()) == 0 || mirrors(*leaf);
         });
         if (moved == leaves.end()) continue;
         osgUtil::StateGraph* child = graph->find_or_insert(ss);

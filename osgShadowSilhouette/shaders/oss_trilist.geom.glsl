@@ -14,9 +14,10 @@
 // (both grow away from the light and are linear in texture-space x, y).
 //
 // A closed caster (oss_listFrontOnly) lists only its triangles wound counter-clockwise in
-// the light's view: a shadow ray from outside that meets a closed surface crosses it once
-// each way, so one of the two orientations blocks every ray the caster blocks. The lists
-// are about half as long (mirroring transforms swap the two halves; either will do).
+// the light's view, those facing the light: a shadow ray that meets a closed surface leaves
+// it through one of them, whether it starts outside (it also crossed a face turned away)
+// or inside (a room around the receiver). The lists are about half as long. Mirrored draws
+// of closed casters list both sides (the technique does not mark them).
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
