@@ -5,47 +5,119 @@
 #include "ShaderSource.h"
 
 #include <osg/BlendEquation>
+#include <osg/GLExtensions>
 #include <osg/BlendFunc>
 #include <osg/Geode>
 #include <osg/Image>
 #include <osgUtil/CullVisitor>
 
+#include <cstring>
+
 namespace osgShadowSilhouette {
 
 namespace {
 
-osg::ref_ptr<osg::Texture2D> silhouetteTexture()
+osg::ref_ptr<osg::Texture2D> nearestTexture(GLint internalFormat, GLenum format, GLenum type,
+                                            osg::Texture::WrapMode wrap)
 {
     osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
-    t->setInternalFormat(GL_R32F);
-    t->setSourceFormat(GL_RED);
-    t->setSourceType(GL_FLOAT);
+    t->setInternalFormat(internalFormat);
+    t->setSourceFormat(format);
+    t->setSourceType(type);
     t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
     t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER); // outside: the default point
-    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
+    t->setWrap(osg::Texture::WRAP_S, wrap);
+    t->setWrap(osg::Texture::WRAP_T, wrap);
+    return t;
+}
+
+osg::ref_ptr<osg::Texture2D> silhouetteTexture()
+{
+    // Outside: the default point.
+    osg::ref_ptr<osg::Texture2D> t = nearestTexture(GL_R32F, GL_RED, GL_FLOAT, osg::Texture::CLAMP_TO_BORDER);
     const double centre = defaultSilhouetteValue();
     t->setBorderColor(osg::Vec4d(centre, centre, centre, centre));
     return t;
+}
+
+osg::ref_ptr<osg::Texture2D> neighbourhoodTexture()
+{
+    // Read with texelFetch only, clamped by the shader.
+    return nearestTexture(GL_RGBA32UI_EXT, GL_RGBA_INTEGER_EXT, GL_UNSIGNED_INT, osg::Texture::CLAMP_TO_EDGE);
+}
+
+/** Clears the bound colour buffer 0 to the default neighbourhood: integer buffers cannot be
+ *  cleared with glClear (the result is undefined), so the neighbourhood camera draws this
+ *  first (render bin -1) instead of clearing. */
+class ClearNeighbourhood : public osg::Drawable
+{
+    using ClearBufferuiv = void(GL_APIENTRY*)(GLenum, GLint, const GLuint*);
+
+public:
+    ClearNeighbourhood()
+    {
+        setSupportsDisplayList(false);
+        setCullingActive(false);
+        setName("osgShadowSilhouette clear neighbourhood map");
+    }
+
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(0, 0, 0, 0, 0, 0); }
+
+    void drawImplementation(osg::RenderInfo& renderInfo) const override
+    {
+        const unsigned int id = renderInfo.getContextID();
+        if (id >= _clear.size()) _clear.resize(id + 1, nullptr);
+        if (!_clear[id])
+        {
+            osg::setGLExtensionFuncPtr(_clear[id], "glClearBufferuiv");
+            if (!_clear[id])
+            {
+                OSG_WARN << "osgShadowSilhouette: glClearBufferuiv is missing (OpenGL 3.0); the silhouette "
+                            "map's neighbourhood map is not cleared" << std::endl;
+                return;
+            }
+        }
+        const std::array<std::uint32_t, 4> value = defaultNeighbourhood();
+        _clear[id](GL_COLOR, 0, value.data());
+    }
+
+private:
+    mutable std::vector<ClearBufferuiv> _clear;
+};
+
+} // namespace
+
+namespace {
+
+/** The state of a pass over the edge lines: the silhouette-map vertex and geometry stages with
+ *  fragment stage `fragment`; no depth test, culling, blending or lighting. */
+osg::ref_ptr<osg::StateSet> edgePassState(const char* name, const char* fragment)
+{
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName(name);
+    program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_SILMAP_VERT));
+    program->addShader(detail::loadShader(osg::Shader::GEOMETRY, shader::FILE_SILMAP_GEOM));
+    program->addShader(detail::loadShader(osg::Shader::FRAGMENT, fragment));
+    ss->setAttributeAndModes(program.get(), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    for (GLenum mode : {GLenum(GL_DEPTH_TEST), GLenum(GL_CULL_FACE), GLenum(GL_BLEND), GLenum(GL_LIGHTING)})
+        ss->setMode(mode, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    return ss;
 }
 
 } // namespace
 
 osg::ref_ptr<osg::StateSet> SilhouetteMapPass::createSharedStateSet()
 {
-    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
-    const auto overrideOff = osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE;
-    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
-    osg::ref_ptr<osg::Program> program = new osg::Program;
-    program->setName("osgShadowSilhouette silhouette map");
-    program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_SILMAP_VERT));
-    program->addShader(detail::loadShader(osg::Shader::GEOMETRY, shader::FILE_SILMAP_GEOM));
-    program->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILMAP_FRAG));
-    ss->setAttributeAndModes(program.get(), overrideOn);
+    osg::ref_ptr<osg::StateSet> ss = edgePassState("osgShadowSilhouette silhouette map", shader::FILE_SILMAP_FRAG);
     ss->addUniform(new osg::Uniform(shader::SILMAP_DEPTH, 0));
     ss->addUniform(new osg::Uniform(shader::SILMAP_DEPTH_BIAS, shader::SILMAP_DEFAULT_DEPTH_BIAS));
-    for (GLenum mode : {GLenum(GL_DEPTH_TEST), GLenum(GL_CULL_FACE), GLenum(GL_BLEND), GLenum(GL_LIGHTING)})
-        ss->setMode(mode, overrideOff);
+    // The neighbourhood pass: the same edges, widened, packing each texel's five points.
+    osg::ref_ptr<osg::StateSet> nbr =
+        edgePassState("osgShadowSilhouette silhouette neighbourhood map", shader::FILE_SILNBR_FRAG);
+    nbr->setDefine(shader::DEFINE_SILMAP_NEIGHBOURHOOD);
+    nbr->addUniform(new osg::Uniform(shader::SILMAP_POINTS, 0));
+    ss->setUserData(nbr.get());
     return ss;
 }
 
@@ -62,6 +134,25 @@ osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createDefaultTexture()
     image->allocateImage(1, 1, 1, GL_RED, GL_FLOAT);
     *reinterpret_cast<float*>(image->data()) = defaultSilhouetteValue();
     osg::ref_ptr<osg::Texture2D> t = silhouetteTexture();
+    t->setImage(image.get());
+    return t;
+}
+
+osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createNeighbourhoodTexture(unsigned int size)
+{
+    osg::ref_ptr<osg::Texture2D> t = neighbourhoodTexture();
+    t->setTextureSize(size + 1, size + 1);
+    return t;
+}
+
+osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createDefaultNeighbourhoodTexture()
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(1, 1, 1, GL_RGBA_INTEGER_EXT, GL_UNSIGNED_INT);
+    image->setInternalTextureFormat(GL_RGBA32UI_EXT);
+    const std::array<std::uint32_t, 4> value = defaultNeighbourhood();
+    std::memcpy(image->data(), value.data(), sizeof(value));
+    osg::ref_ptr<osg::Texture2D> t = neighbourhoodTexture();
     t->setImage(image.get());
     return t;
 }
@@ -105,6 +196,37 @@ SilhouetteMapPass::SilhouetteMapPass(unsigned int mapSize, const osg::StateSet& 
     geode->setCullingActive(false);
     geode->addDrawable(_edges->getLines());
     c.addChild(geode.get());
+    _neighbourhoodShared = dynamic_cast<const osg::StateSet*>(shared.getUserData());
+}
+
+void SilhouetteMapPass::createNeighbourhoodPass()
+{
+    _neighbourhoodTexture = createNeighbourhoodTexture(_mapSize);
+    _neighbourhoodCamera = new osg::Camera;
+    osg::Camera& c = *_neighbourhoodCamera;
+    c.setName(_camera->getName() + " neighbourhood");
+    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    c.setRenderOrder(osg::Camera::PRE_RENDER, 2); // after the silhouette map it reads
+    c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    c.setImplicitBufferAttachmentMask(0, 0);
+    c.setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
+    c.setCullingMode(osg::CullSettings::NO_CULLING);
+    c.setClearMask(0); // ClearNeighbourhood clears the integer buffer
+    c.setStateSet(_neighbourhoodShared ? new osg::StateSet(*_neighbourhoodShared, osg::CopyOp::SHALLOW_COPY)
+                                       : new osg::StateSet);
+    c.getStateSet()->setTextureAttributeAndModes(0, _texture.get(), osg::StateAttribute::ON);
+    c.setViewport(0, 0, _mapSize + 1, _mapSize + 1);
+    c.setViewMatrix(osg::Matrixd::identity());
+    c.attach(osg::Camera::COLOR_BUFFER, _neighbourhoodTexture.get());
+    osg::ref_ptr<osg::Geode> clear = new osg::Geode;
+    clear->setCullingActive(false);
+    clear->getOrCreateStateSet()->setRenderBinDetails(-1, "RenderBin");
+    clear->addDrawable(new ClearNeighbourhood);
+    c.addChild(clear.get());
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->setCullingActive(false);
+    geode->addDrawable(_edges->getLines());
+    c.addChild(geode.get());
 }
 
 SilhouetteMapPass::~SilhouetteMapPass() = default;
@@ -142,18 +264,38 @@ void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frust
     if (ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE) != depthTexture)
         ss->setTextureAttributeAndModes(0, depthTexture, osg::StateAttribute::ON);
     _camera->accept(cv);
+    if (_depthComparison) return; // HYBRID's edge mask reads the map itself
+    if (!_neighbourhoodCamera) createNeighbourhoodPass();
+    _neighbourhoodCamera->setProjectionMatrix(frustum.projection);
+    _neighbourhoodCamera->accept(cv);
+}
+
+osg::Texture2D* SilhouetteMapPass::getNeighbourhoodTexture()
+{
+    if (!_neighbourhoodCamera) createNeighbourhoodPass();
+    return _neighbourhoodTexture.get();
+}
+
+osg::Camera* SilhouetteMapPass::getNeighbourhoodCamera()
+{
+    if (!_neighbourhoodCamera) createNeighbourhoodPass();
+    return _neighbourhoodCamera.get();
 }
 
 void SilhouetteMapPass::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _camera->resizeGLObjectBuffers(maxSize);
     _texture->resizeGLObjectBuffers(maxSize);
+    if (_neighbourhoodCamera) _neighbourhoodCamera->resizeGLObjectBuffers(maxSize);
+    if (_neighbourhoodTexture) _neighbourhoodTexture->resizeGLObjectBuffers(maxSize);
 }
 
 void SilhouetteMapPass::releaseGLObjects(osg::State* state) const
 {
     _camera->releaseGLObjects(state);
     _texture->releaseGLObjects(state);
+    if (_neighbourhoodCamera) _neighbourhoodCamera->releaseGLObjects(state);
+    if (_neighbourhoodTexture) _neighbourhoodTexture->releaseGLObjects(state);
 }
 
 } // namespace osgShadowSilhouette

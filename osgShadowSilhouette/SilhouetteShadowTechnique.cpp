@@ -470,6 +470,7 @@ void SilhouetteShadowTechnique::init()
     _listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
     _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
     _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
+    _defaultNeighbourhoodTexture = SilhouetteMapPass::createDefaultNeighbourhoodTexture();
     _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
 
     _stencilProgram = new osg::Program;
@@ -535,6 +536,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->resizeGLObjectBuffers(maxSize);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
+    if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->resizeGLObjectBuffers(maxSize);
     if (_litRawDepthTexture) _litRawDepthTexture->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _viewDataMap)
     {
@@ -559,6 +561,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->releaseGLObjects(state);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
+    if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->releaseGLObjects(state);
     if (_litRawDepthTexture) _litRawDepthTexture->releaseGLObjects(state);
     for (const auto& entry : _viewDataMap)
     {
@@ -743,7 +746,9 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     const unsigned int capacity = slotCapacity();
-    std::vector<osg::Texture2D*> silhouetteMaps(capacity, _defaultSilhouetteTexture.get());
+    // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
+    std::vector<osg::Texture2D*> silhouetteMaps(
+        capacity, silhouette ? _defaultNeighbourhoodTexture.get() : _defaultSilhouetteTexture.get());
     for (unsigned int slot = 0; slot < capacity; ++slot)
     {
         vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
@@ -916,7 +921,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     if (!silhouette) return;
-    silhouetteMap = pass.silhouettePass->getTexture();
+    silhouetteMap = pass.silhouettePass->getNeighbourhoodTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
 }
 

@@ -46,8 +46,8 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // execute both sides of a branch on SIMD rasterizers such as llvmpipe.
 // In the silhouette-map mode the term comes from oss_silhouetteTerm() (oss_silhouette.frag.glsl).
 #ifdef OSS_SILHOUETTE_MAP
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
-float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)
+float oss_silhouetteTerm(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 vec4 oss_silhouetteDebug(vec4 eyePosition);
 #define OSS_SLOT_TERM(s) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #elif defined(OSS_TRIANGLE_LISTS)

@@ -33,8 +33,8 @@ uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];// eye space -> light texture
 uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 #ifdef OSS_SILHOUETTE_MAP
 // Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
-float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)
+float oss_silhouetteTerm(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 #ifdef OSS_TRIANGLE_LISTS
 // HYBRID with triangle lists: the term of oss_trilist_term.frag.glsl, linked into the same program.
@@ -296,7 +296,7 @@ vec4 oss_classColor(bool silhouette, bool lit)
 }
 
 #ifdef OSS_SILHOUETTE_MAP
-vec2 oss_silhouetteClass(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+vec2 oss_silhouetteClass(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 
 // The class of slot `slot` at an eye-space position: x the shadow term (1 lit), y 1 where the

@@ -5,8 +5,9 @@
 // The sample is compared with the four depth samples around it (one textureGather). When
 // they agree (not a silhouette pixel) that is the result and nothing else is read. When they
 // disagree (a silhouette pixel), the five silhouette points of the texel and its four
-// neighbours split the texel into four quadrants of two wedges each, and the sample takes
-// the depth-test result of the corner whose wedge holds it.
+// neighbours (one texelFetch of the neighbourhood map, oss_silnbr.frag.glsl) split the texel
+// into four quadrants of two wedges each, and the sample takes the depth-test result of the
+// corner whose wedge holds it.
 // Frames: see osgShadowSilhouette/SilhouettePoints; the C++ twin is silhouetteMapLit().
 // Compiled empty unless OSS_SILHOUETTE_MAP is defined.
 
@@ -66,29 +67,27 @@ bool oss_silhouetteSample(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition
     return true;
 }
 
-// Four stored points (decodeSilhouettePoint()) as their x and y coordinates.
-void oss_decodePoints(vec4 stored, out vec4 x, out vec4 y)
+// A point's 24-bit stored value (decodeSilhouettePoint()) as its coordinates.
+vec2 oss_decodePoint(uint stored)
 {
-    vec4 hi = floor(stored / 4096.0);
-    x = hi / 2048.0;
-    y = (stored - hi * 4096.0) / 2048.0;
+    return vec2(uvec2(stored >> 12u, stored & 0xFFFu)) / 2048.0;
 }
 
-// The five silhouette points in the frame of the centre texel, from two gathers: around
-// (i+1, j+1) the texels N, NE, E, C and around (i, j) the texels W, C, S, SW (gather order
-// (0,1), (1,1), (1,0), (0,0)). Outside the map the border holds the default point.
-void oss_silhouettePoints(sampler2D silhouetteMap, ivec2 texel, out vec2 c, out vec2 e, out vec2 n, out vec2 w,
+// The five silhouette points in the frame of the centre texel, from one texel of the
+// neighbourhood map (oss_silnbr.frag.glsl, unpackNeighbourhood()): texel k of the silhouette
+// map is its texel k + 1. Outside it (samples whose depth corners all lie outside the depth
+// map, never silhouette pixels) the fetch is clamped to the border.
+void oss_silhouettePoints(usampler2D neighbourhood, ivec2 texel, out vec2 c, out vec2 e, out vec2 n, out vec2 w,
                           out vec2 s)
 {
-    vec2 size = vec2(textureSize(silhouetteMap, 0));
-    vec4 x1, y1, x0, y0;
-    oss_decodePoints(textureGather(silhouetteMap, (vec2(texel) + 1.0) / size), x1, y1);
-    oss_decodePoints(textureGather(silhouetteMap, vec2(texel) / size), x0, y0);
-    c = vec2(x1.w, y1.w);
-    e = vec2(x1.z + 1.0, y1.z);
-    n = vec2(x1.x, y1.x + 1.0);
-    w = vec2(x0.x - 1.0, y0.x);
-    s = vec2(x0.z, y0.z - 1.0);
+    ivec2 last = textureSize(neighbourhood, 0) - 1;
+    uvec4 v = texelFetch(neighbourhood, clamp(texel + 1, ivec2(0), last), 0);
+    uvec3 top = v.xyz >> 24u;
+    c = oss_decodePoint(v.x & 0xFFFFFFu);
+    e = oss_decodePoint(v.y & 0xFFFFFFu) + vec2(1.0, 0.0);
+    n = oss_decodePoint(v.z & 0xFFFFFFu) + vec2(0.0, 1.0);
+    w = oss_decodePoint(v.w) - vec2(1.0, 0.0);
+    s = oss_decodePoint(top.x | (top.y << 8u) | (top.z << 16u)) - vec2(0.0, 1.0);
 }
 
 float oss_cross2(vec2 a, vec2 b)
@@ -96,36 +95,24 @@ float oss_cross2(vec2 a, vec2 b)
     return a.x * b.y - a.y * b.x;
 }
 
-// p in the closed wedge (triangle) (c, x, y) of either orientation, never in one of zero
-// area. sx = cross(x - c, p - c) and sy = cross(y - c, p - c) are shared between the wedges
-// around c; the same test as insideTriangle() in SilhouettePoints.
-bool oss_insideWedge(vec2 p, vec2 c, vec2 x, vec2 y, float sx, float sy)
-{
-    if (oss_cross2(x - c, y - c) == 0.0)
-        return false;
-    vec3 d = vec3(sx, oss_cross2(y - x, p - x), -sy);
-    return !(any(lessThan(d, vec3(0.0))) && any(greaterThan(d, vec3(0.0))));
-}
-
-// The corner (0 SW, 1 SE, 2 NE, 3 NW) whose wedge holds p; the nearest corner when none does.
-// The eight wedges fan around c: (c, e, NE), (c, NE, n), (c, n, NW), (c, NW, w), (c, w, SW),
-// (c, SW, s), (c, s, SE), (c, SE, e); two per corner, tried NE, NW, SW, SE.
+// The corner (0 SW, 1 SE, 2 NE, 3 NW) whose quadrant holds p. The rays from c to its four
+// neighbours e, n, w, s split the plane around c into four sectors, counter-clockwise
+// NE (e..n), NW (n..w), SW (w..s), SE (s..e), each closed, tried in that order; a sector
+// wider than half a turn holds what lies on the near side of either of its rays. Within the
+// texel this is the union of the sector's two wedges (c, e, NE) + (c, NE, n) of the paper,
+// because every point lies in its own texel (wedgeCorner() in SilhouettePoints).
 int oss_wedgeCorner(vec2 c, vec2 e, vec2 n, vec2 w, vec2 s, vec2 p)
 {
-    const vec2 SW = vec2(0.0, 0.0), SE = vec2(1.0, 0.0), NE = vec2(1.0, 1.0), NW = vec2(0.0, 1.0);
     vec2 q = p - c;
-    float se = oss_cross2(e - c, q), sNE = oss_cross2(NE - c, q), sn = oss_cross2(n - c, q);
-    float sNW = oss_cross2(NW - c, q), sw = oss_cross2(w - c, q), sSW = oss_cross2(SW - c, q);
-    float ss = oss_cross2(s - c, q), sSE = oss_cross2(SE - c, q);
-    if (oss_insideWedge(p, c, e, NE, se, sNE) || oss_insideWedge(p, c, NE, n, sNE, sn))
-        return 2;
-    if (oss_insideWedge(p, c, n, NW, sn, sNW) || oss_insideWedge(p, c, NW, w, sNW, sw))
-        return 3;
-    if (oss_insideWedge(p, c, w, SW, sw, sSW) || oss_insideWedge(p, c, SW, s, sSW, ss))
-        return 0;
-    if (oss_insideWedge(p, c, s, SE, ss, sSE) || oss_insideWedge(p, c, SE, e, sSE, se))
-        return 1;
-    return p.x >= 0.5 ? (p.y >= 0.5 ? 2 : 1) : (p.y >= 0.5 ? 3 : 0);
+    vec2 de = e - c, dn = n - c, dw = w - c, ds = s - c;
+    vec4 side = vec4(oss_cross2(de, q), oss_cross2(dn, q), oss_cross2(dw, q), oss_cross2(ds, q));
+    vec4 turn = vec4(oss_cross2(de, dn), oss_cross2(dn, dw), oss_cross2(dw, ds), oss_cross2(ds, de));
+    bvec4 from = greaterThanEqual(side, vec4(0.0)); // on or counter-clockwise of the sector's first ray
+    bvec4 to = lessThanEqual(side.yzwx, vec4(0.0)); // on or clockwise of its last ray
+    bvec4 convex = greaterThanEqual(turn, vec4(0.0));
+    bvec4 inside = bvec4(convex.x ? from.x && to.x : from.x || to.x, convex.y ? from.y && to.y : from.y || to.y,
+                         convex.z ? from.z && to.z : from.z || to.z, convex.w ? from.w && to.w : from.w || to.w);
+    return inside.x ? 2 : inside.y ? 3 : inside.z ? 0 : inside.w ? 1 : (p.x >= 0.5 ? (p.y >= 0.5 ? 2 : 1) : (p.y >= 0.5 ? 3 : 0));
 }
 
 // The depth tests of the four corners, each against the receiver's plane extended to that
@@ -141,7 +128,7 @@ vec4 oss_planeBiasedTests(vec2 mapSize, oss_SilhouetteSample s)
 }
 
 // The shadow test of a silhouette pixel from the five silhouette points.
-float oss_silhouetteReconstruct(sampler2D silhouetteMap, oss_SilhouetteSample s)
+float oss_silhouetteReconstruct(usampler2D silhouetteMap, oss_SilhouetteSample s)
 {
     vec2 c, e, n, w, so;
     oss_silhouettePoints(silhouetteMap, s.texel, c, e, n, w, so);
@@ -156,7 +143,7 @@ bool oss_isSilhouettePixel(oss_SilhouetteSample s)
 }
 
 // 1 lit, 0 shadowed.
-float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+float oss_silhouetteTerm(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
@@ -165,13 +152,20 @@ float oss_silhouetteTerm(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeTo
     if (oss_isSilhouettePixel(s)) // the branch that lets GPUs skip the reconstruction
     {
         s.lit = oss_planeBiasedTests(vec2(textureSize(depthMap, 0)), s);
-        lit = oss_isSilhouettePixel(s) ? oss_silhouetteReconstruct(silhouetteMap, s) : s.lit.x;
+        bool reconstruct = oss_isSilhouettePixel(s);
+        // SIMD rasterizers (llvmpipe) run this block for every lane of a pixel block, and a
+        // lane's fetch reads memory whether the lane is active or not: lanes that do not
+        // reconstruct all read the same texel, which stays in cache. (Half the frame at map
+        // size 2048 without it; GPUs skip the inactive lanes either way.)
+        s.texel = reconstruct ? s.texel : ivec2(-1);
+        float exact = oss_silhouetteReconstruct(silhouetteMap, s);
+        lit = reconstruct ? exact : s.lit.x;
     }
     return lit;
 }
 
 // DebugView DEBUG_CLASSES: x the term of oss_silhouetteTerm(), y 1 where it reconstructed.
-vec2 oss_silhouetteClass(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+vec2 oss_silhouetteClass(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
@@ -185,7 +179,7 @@ vec2 oss_silhouetteClass(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeTo
 // Debug view: the silhouette map projected onto the scene. Silhouette texels that hold an
 // edge point are tinted yellow and their point drawn as a red dot; where a texel covers
 // several pixels the dual grid is drawn too.
-vec4 oss_silhouetteMapOverlay(sampler2D depthMap, sampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
+vec4 oss_silhouetteMapOverlay(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition)
 {
     oss_SilhouetteSample s;
     if (!oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s))
@@ -214,7 +208,7 @@ uniform int oss_maskLight;
 uniform int oss_lightIndex[8];
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 uniform sampler2D oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
-uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS];
+uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps
 int oss_shadowSlotOf(int light);
 
 // The debug overlay (rgb, opacity) of the light oss_maskLight (see the DebugView values).

@@ -13,13 +13,23 @@
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
 
+#pragma import_defines(OSS_SILMAP_COMPARE, OSS_SILMAP_NEIGHBOURHOOD)
+#ifdef OSS_SILMAP_NEIGHBOURHOOD
+// The neighbourhood map (oss_silnbr.frag.glsl): every texel within one texel of a texel the
+// edge touches, drawn one texel up and to the right in a map one texel larger.
+#define OSS_HALF_WIDTH 1.75
+#define OSS_WINDOW_OFFSET 1.0
+uniform sampler2D oss_silmapPoints;      // the silhouette map (its size is the map size)
+#define OSS_MAP_SIZE vec2(textureSize(oss_silmapPoints, 0))
+#else
 #define OSS_HALF_WIDTH 0.75
-
-#pragma import_defines(OSS_SILMAP_COMPARE)
+#define OSS_WINDOW_OFFSET 0.0
 #ifdef OSS_SILMAP_COMPARE
 uniform sampler2DShadow oss_silmapDepth; // the light's depth map (its size is the map size)
 #else
 uniform sampler2D oss_silmapDepth;       // the light's depth map (its size is the map size)
+#endif
+#define OSS_MAP_SIZE vec2(textureSize(oss_silmapDepth, 0))
 #endif
 
 flat out vec4 oss_edge;      // endpoints a.xy, b.xy in silhouette-map window coordinates
@@ -44,7 +54,7 @@ void oss_emit(vec2 window, vec2 size, vec4 edge, vec2 depth)
     oss_edge = edge;
     oss_edgeDepth = depth;
     oss_edgeDepthSlope = abs(depth.y - depth.x) / max(length(edge.zw - edge.xy), 1e-6);
-    gl_Position = vec4(window / size * 2.0 - 1.0, 0.0, 1.0);
+    gl_Position = vec4((window + OSS_WINDOW_OFFSET) / (size + OSS_WINDOW_OFFSET) * 2.0 - 1.0, 0.0, 1.0);
     EmitVertex();
 }
 
@@ -53,7 +63,7 @@ void main()
     vec4 a = gl_in[0].gl_Position, b = gl_in[1].gl_Position;
     if (!oss_clipToFront(a, b))
         return;
-    vec2 size = vec2(textureSize(oss_silmapDepth, 0));
+    vec2 size = OSS_MAP_SIZE;
     vec3 na = a.xyz / a.w, nb = b.xyz / b.w;
     vec2 wa = (na.xy * 0.5 + 0.5) * size - 0.5;
     vec2 wb = (nb.xy * 0.5 + 0.5) * size - 0.5;

@@ -308,3 +308,142 @@ TEST(Storage, EncodingRoundTrips)
         EXPECT_LE(std::abs(q.y() - p.y()), 0.5 / SILHOUETTE_POINT_STEPS + 1e-12);
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// wedgeCorner() tests four rays where the paper tests eight triangles; within the texel the
+// two agree wherever every point lies in its own texel (which storage guarantees).
+
+namespace {
+
+/** The paper's form: the first corner, in the order NE, NW, SW, SE, one of whose two wedges
+ *  (closed triangles of nonzero area) holds p; -1 when none does. */
+int paperWedgeCorner(const SilhouetteNeighbourhood& n, const osg::Vec2d& p)
+{
+    const osg::Vec2d* from[4] = {&n.east, &n.north, &n.west, &n.south};
+    const osg::Vec2d* to[4] = {&n.north, &n.west, &n.south, &n.east};
+    const Corner corner[4] = {CORNER_NE, CORNER_NW, CORNER_SW, CORNER_SE};
+    for (int k = 0; k < 4; ++k)
+    {
+        const osg::Vec2d c = cornerPosition(corner[k]);
+        if (insideTriangle(p, n.centre, *from[k], c) || insideTriangle(p, n.centre, c, *to[k])) return corner[k];
+    }
+    return -1;
+}
+
+/** Five stored points drawn from a grid of `steps` per texel (0 and 1 included, so points
+ *  on texel sides and corners come up often), or uniformly when steps is 0. */
+SilhouetteNeighbourhood randomNeighbourhood(std::mt19937& rng, int steps)
+{
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::uniform_int_distribution<int> grid(0, std::max(steps, 1));
+    auto coordinate = [&] { return steps > 0 ? double(grid(rng)) / steps : uniform(rng); };
+    auto point = [&] { return osg::Vec2d(coordinate(), coordinate()); };
+    const osg::Vec2d c = point(), e = point(), n = point(), w = point(), s = point();
+    return SilhouetteNeighbourhood::fromStored(c, e, n, w, s);
+}
+
+} // namespace
+
+TEST(Wedge, FourRaysAgreeWithTheEightWedgesOfThePaper)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> in(0.0, 1.0);
+    int tested = 0, reflex = 0;
+    for (int trial = 0; trial < 20000; ++trial)
+    {
+        const SilhouetteNeighbourhood n = randomNeighbourhood(rng, 0);
+        reflex += silhouette::cross(n.east - n.centre, n.north - n.centre) < 0.0 ||
+                  silhouette::cross(n.north - n.centre, n.west - n.centre) < 0.0 ||
+                  silhouette::cross(n.west - n.centre, n.south - n.centre) < 0.0 ||
+                  silhouette::cross(n.south - n.centre, n.east - n.centre) < 0.0;
+        for (int k = 0; k < 8; ++k)
+        {
+            const osg::Vec2d p(in(rng), in(rng));
+            const int paper = paperWedgeCorner(n, p);
+            ASSERT_NE(paper, -1) << "the eight wedges cover the texel";
+            ASSERT_EQ(int(wedgeCorner(n, p)), paper) << "trial " << trial;
+            ++tested;
+        }
+    }
+    EXPECT_EQ(tested, 160000);
+    EXPECT_GT(reflex, 100); // quadrants wider than half a turn are exercised
+}
+
+TEST(Wedge, FourRaysAgreeOnGridPointsWhereTheWedgesDecide)
+{
+    // Points on texel sides and corners make wedges of zero area, which the paper's form
+    // skips; wherever one of its wedges holds p, the rays give the same corner.
+    std::mt19937 rng(12);
+    std::uniform_int_distribution<int> grid(0, 8);
+    int decided = 0;
+    for (int trial = 0; trial < 20000; ++trial)
+    {
+        const SilhouetteNeighbourhood n = randomNeighbourhood(rng, 4);
+        const osg::Vec2d p(grid(rng) / 8.0, grid(rng) / 8.0);
+        const int paper = paperWedgeCorner(n, p);
+        if (paper < 0) continue;
+        ++decided;
+        // Ties: a point on a ray shared by two quadrants goes to the first in NE, NW, SW, SE
+        // order in both forms, unless the paper's first quadrant there has zero area.
+        const Corner rays = wedgeCorner(n, p);
+        if (int(rays) != paper)
+        {
+            const osg::Vec2d q = p - n.centre;
+            const osg::Vec2d ray[4] = {n.east - n.centre, n.north - n.centre, n.west - n.centre, n.south - n.centre};
+            bool onRay = false;
+            for (const osg::Vec2d& r : ray) onRay = onRay || silhouette::cross(r, q) == 0.0;
+            EXPECT_TRUE(onRay) << "trial " << trial << ": rays " << rays << ", wedges " << paper;
+        }
+    }
+    EXPECT_GT(decided, 19000);
+}
+
+TEST(Neighbourhood, PackingKeepsAllFivePoints)
+{
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> step(0, 2048);
+    for (int trial = 0; trial < 2000; ++trial)
+    {
+        osg::Vec2d points[5];
+        float stored[5];
+        for (int k = 0; k < 5; ++k)
+        {
+            points[k] = osg::Vec2d(step(rng), step(rng)) / SILHOUETTE_POINT_STEPS;
+            stored[k] = encodeSilhouettePoint(points[k]);
+        }
+        const SilhouetteNeighbourhood n =
+            unpackNeighbourhood(packNeighbourhood(stored[0], stored[1], stored[2], stored[3], stored[4]));
+        const SilhouetteNeighbourhood expected =
+            SilhouetteNeighbourhood::fromStored(points[0], points[1], points[2], points[3], points[4]);
+        ASSERT_EQ(n.centre, expected.centre);
+        ASSERT_EQ(n.east, expected.east);
+        ASSERT_EQ(n.north, expected.north);
+        ASSERT_EQ(n.west, expected.west);
+        ASSERT_EQ(n.south, expected.south);
+    }
+    // The extremes: every coordinate 0, every coordinate 1 (2048, the largest 12-bit value used).
+    for (double v : {0.0, 1.0})
+    {
+        const float s = encodeSilhouettePoint(osg::Vec2d(v, v));
+        const SilhouetteNeighbourhood n = unpackNeighbourhood(packNeighbourhood(s, s, s, s, s));
+        EXPECT_EQ(n.south, osg::Vec2d(v, v - 1.0));
+        EXPECT_EQ(n.west, osg::Vec2d(v - 1.0, v));
+    }
+}
+
+TEST(Neighbourhood, ClearedTexelHoldsFiveDefaultPoints)
+{
+    const SilhouetteNeighbourhood n = unpackNeighbourhood(defaultNeighbourhood());
+    const SilhouetteNeighbourhood d;
+    EXPECT_EQ(n.centre, d.centre);
+    EXPECT_EQ(n.east, d.east);
+    EXPECT_EQ(n.north, d.north);
+    EXPECT_EQ(n.west, d.west);
+    EXPECT_EQ(n.south, d.south);
+    // The layout, worked by hand: the default value is 1024 * 4096 + 1024 = 0x400400.
+    const std::array<std::uint32_t, 4> v = defaultNeighbourhood();
+    EXPECT_EQ(v[0], 0x00400400u); // centre | south bits 0-7 (0x00) << 24
+    EXPECT_EQ(v[1], 0x04400400u); // east | south bits 8-15 (0x04) << 24
+    EXPECT_EQ(v[2], 0x40400400u); // north | south bits 16-23 (0x40) << 24
+    EXPECT_EQ(v[3], 0x00400400u); // west
+}

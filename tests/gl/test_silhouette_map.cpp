@@ -124,6 +124,16 @@ std::vector<osg::Vec2d> expectedMap(const std::vector<osg::Vec3d>& world, const 
     return map;
 }
 
+/** The casters of a group holding one geode with these drawables. */
+std::vector<Caster> castersOf(std::initializer_list<osg::ref_ptr<osg::Geometry>> drawables, MeshCache& cache)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    for (const osg::ref_ptr<osg::Geometry>& g : drawables) geode->addDrawable(g.get());
+    osg::ref_ptr<osg::Group> parent = new osg::Group;
+    parent->addChild(geode.get());
+    return collectCasters(*parent, ~0u, cache); // each Caster keeps its geometry
+}
+
 } // namespace
 
 TEST(SilhouetteMapPass, ReadBackMatchesTheCppRules)
@@ -132,11 +142,7 @@ TEST(SilhouetteMapPass, ReadBackMatchesTheCppRules)
     ASSERT_TRUE(renderer.valid()) << "GL tests need a display (run them under xvfb-run)";
 
     osg::ref_ptr<MeshCache> cache = new MeshCache;
-    osg::ref_ptr<osg::Geode> casterRoot = new osg::Geode;
-    casterRoot->addDrawable(makePolygon());
-    osg::ref_ptr<osg::Group> parent = new osg::Group;
-    parent->addChild(casterRoot.get());
-    const std::vector<Caster> casters = collectCasters(*parent, ~0u, *cache);
+    const std::vector<Caster> casters = castersOf({makePolygon()}, *cache);
     ASSERT_EQ(casters.size(), 1u);
     EXPECT_FALSE(casters[0].closed);
 
@@ -177,6 +183,82 @@ TEST(SilhouetteMapPass, ReadBackMatchesTheCppRules)
     renderer.renderAndCapture();
     EXPECT_TRUE(pass->getExtractionSkipped());
     EXPECT_EQ(pass->getEdges()->getExtractionCount(), 1u);
+}
+
+namespace {
+
+/** A triangle in z = 0 that reaches past the map's right and bottom sides, beside the polygon
+ *  and clear of the occluder. */
+osg::ref_ptr<osg::Geometry> makeBorderTriangle()
+{
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(24.6f, -2.7f, 0.0f));
+    v->push_back(osg::Vec3(35.3f, 6.2f, 0.0f));
+    v->push_back(osg::Vec3(29.1f, 12.8f, 0.0f));
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setVertexArray(v.get());
+    g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
+    return g;
+}
+
+} // namespace
+
+// The neighbourhood map the eye pass reads: texel k + 1 packs the points of silhouette texel k
+// and its four neighbours (default points outside the map), for k from -1 to N - 1. Read back
+// and compared with packNeighbourhood() of the map the C++ rules give.
+TEST(SilhouetteMapPass, NeighbourhoodMapPacksTheFivePointsOfEveryTexel)
+{
+    osshar::Renderer renderer(64, 64, true);
+    ASSERT_TRUE(renderer.valid()) << "GL tests need a display (run them under xvfb-run)";
+
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    const std::vector<Caster> casters = castersOf({makePolygon(), makeBorderTriangle()}, *cache);
+    ASSERT_EQ(casters.size(), 2u);
+
+    std::vector<float> depths;
+    osg::ref_ptr<osg::Texture2D> depthMap = makeDepthMap(depths);
+    osg::ref_ptr<SilhouetteMapPass> pass = new SilhouetteMapPass(N, *SilhouetteMapPass::createSharedStateSet(), "test");
+    osg::ref_ptr<osg::Image> readBack = new osg::Image;
+    readBack->allocateImage(N + 1, N + 1, 1, GL_RGBA_INTEGER_EXT, GL_UNSIGNED_INT);
+    readBack->setInternalTextureFormat(GL_RGBA32UI_EXT);
+    std::memset(readBack->data(), 0, readBack->getTotalSizeInBytes());
+    ASSERT_EQ(pass->getNeighbourhoodTexture()->getTextureWidth(), int(N + 1));
+    pass->getNeighbourhoodCamera()->attach(osg::Camera::COLOR_BUFFER, readBack.get());
+    const LightFrustum frustum = topDownFrustum();
+    renderer.setSceneData(new PassNode(pass.get(), frustum, depthMap.get(), casters, osg::Vec4d(0, 0, 1, 0)));
+    renderer.renderAndCapture();
+
+    const std::vector<osg::Vec2d> map = expectedMap(pass->getEdges()->getWorldEndpoints(), frustum, depths);
+    auto stored = [&](int i, int j) {
+        return (i < 0 || j < 0 || i >= int(N) || j >= int(N)) ? osg::Vec2d(0.5, 0.5) : map[j * N + i];
+    };
+    const std::uint32_t* texels = reinterpret_cast<const std::uint32_t*>(readBack->data());
+    int moved = 0, border = 0;
+    for (int j = -1; j < int(N); ++j)
+        for (int i = -1; i < int(N); ++i)
+        {
+            const std::uint32_t* t = texels + 4 * ((j + 1) * (N + 1) + (i + 1));
+            const SilhouetteNeighbourhood got = unpackNeighbourhood({t[0], t[1], t[2], t[3]});
+            const SilhouetteNeighbourhood want = SilhouetteNeighbourhood::fromStored(
+                stored(i, j), stored(i + 1, j), stored(i, j + 1), stored(i - 1, j), stored(i, j - 1));
+            const std::pair<const osg::Vec2d*, const osg::Vec2d*> points[5] = {
+                {&got.centre, &want.centre}, {&got.east, &want.east}, {&got.north, &want.north},
+                {&got.west, &want.west}, {&got.south, &want.south}};
+            for (const auto& p : points)
+            {
+                EXPECT_NEAR(p.first->x(), p.second->x(), STORED_PRECISION) << "texel " << i << ", " << j;
+                EXPECT_NEAR(p.first->y(), p.second->y(), STORED_PRECISION) << "texel " << i << ", " << j;
+            }
+            const bool nonDefault = want.centre != osg::Vec2d(0.5, 0.5) || want.east != osg::Vec2d(1.5, 0.5) ||
+                                    want.north != osg::Vec2d(0.5, 1.5) || want.west != osg::Vec2d(-0.5, 0.5) ||
+                                    want.south != osg::Vec2d(0.5, -0.5);
+            moved += nonDefault;
+            border += nonDefault && (i == -1 || j == -1 || i == int(N) - 1 || j == int(N) - 1);
+        }
+    // The case exercises the packing: many neighbourhoods hold points, some at the map's sides
+    // (the triangle crosses the right and bottom ones: texels N - 1 and -1).
+    EXPECT_GT(moved, 150);
+    EXPECT_GT(border, 3);
 }
 
 // ---------------------------------------------------------------------------------------
