@@ -9,6 +9,7 @@
 #include <osg/CullFace>
 #include <osg/GLExtensions>
 #include <osg/Image>
+#include <osg/BindImageTexture>
 #include <osg/PolygonOffset>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
@@ -728,9 +729,18 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                       "); using HYBRID_STENCIL_VOLUMES");
         frame.triangleLists = false;
     }
-    // One storage block per slot in use: the eye pass declares no more than it reads.
+    // One storage block (or image) per slot in use: the eye pass declares no more than it reads.
     if (frame.triangleLists)
         vd.receiverStateSet->setDefine(shader::DEFINE_MAX_LIST_SLOTS, std::to_string(std::max(1u, nextFreeSlot)));
+    std::size_t listTexels = 0;
+    for (unsigned int slot = 0; slot < nextFreeSlot && slot < vd.passes.size(); ++slot)
+        if (vd.passes[slot].listPass) listTexels = std::max(listTexels, vd.passes[slot].listPass->getBufferSize() / 16);
+    stats.listImages = frame.triangleLists && cv.getState() &&
+                       TriangleListPass::imageReadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot), listTexels);
+    if (stats.listImages)
+        vd.receiverStateSet->setDefine(shader::DEFINE_LIST_IMAGES);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_LIST_IMAGES);
     stats.triangleLists = frame.triangleLists;
     const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
     if (frame.triangleLists)
@@ -1031,6 +1041,12 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
     if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
         ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
                                                                     pass.listPass->getBufferSize()));
+    // The same buffer as a read-only image, for eye passes that read images (OSS_LIST_IMAGES).
+    const unsigned int unit = shader::LIST_READ_IMAGE_UNIT + slot;
+    auto* image = dynamic_cast<osg::BindImageTexture*>(ss.getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit));
+    if (!image || image->getTexture() != pass.listPass->getImageView())
+        ss.setAttributeAndModes(new osg::BindImageTexture(unit, pass.listPass->getImageView(),
+                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT));
     vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity(),
                                 pass.listPass->getGridSize(), 0u);
     vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);

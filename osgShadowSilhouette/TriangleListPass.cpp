@@ -8,6 +8,7 @@
 #include <osg/observer_ptr>
 #include <osgUtil/CullVisitor>
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -47,11 +48,38 @@ void memoryBarrier(osg::RenderInfo& info)
 #define GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS 0x90DA
 #endif
 
-/** GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS per context ID, 0 until a list pass has asked. */
-std::vector<std::atomic<unsigned int>>& storageBlockLimits()
+#ifndef GL_MAX_FRAGMENT_IMAGE_UNIFORMS
+#define GL_MAX_FRAGMENT_IMAGE_UNIFORMS 0x90CE
+#endif
+#ifndef GL_MAX_TEXTURE_BUFFER_SIZE
+#define GL_MAX_TEXTURE_BUFFER_SIZE 0x8C2B
+#endif
+
+/** The eye pass's limits of one context, 0 until a list pass has asked. */
+struct ContextLimits
 {
-    static std::vector<std::atomic<unsigned int>> limits(64);
+    std::atomic<unsigned int> storageBlocks{0}; ///< GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS
+    std::atomic<unsigned int> imageUniforms{0}; ///< GL_MAX_FRAGMENT_IMAGE_UNIFORMS
+    std::atomic<unsigned int> bufferTexels{0};  ///< GL_MAX_TEXTURE_BUFFER_SIZE
+};
+
+std::vector<ContextLimits>& contextLimits()
+{
+    static std::vector<ContextLimits> limits(64);
     return limits;
+}
+
+std::atomic<bool>& imageReadsAllowed()
+{
+    static std::atomic<bool> allowed{true};
+    return allowed;
+}
+
+unsigned int queryLimit(GLenum name)
+{
+    GLint value = 0;
+    glGetIntegerv(name, &value);
+    return value > 0 ? static_cast<unsigned int>(value) : 0u;
 }
 
 using ClearBufferSubData = void(GL_APIENTRY*)(GLenum, GLenum, GLintptr, GLsizeiptr, GLenum, GLenum, const void*);
@@ -67,12 +95,12 @@ public:
     void operator()(osg::RenderInfo& info) const override
     {
         const unsigned int id = info.getContextID();
-        auto& limits = storageBlockLimits();
-        if (id < limits.size() && limits[id] == 0)
+        auto& limits = contextLimits();
+        if (id < limits.size() && limits[id].storageBlocks == 0)
         {
-            GLint blocks = 0;
-            glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &blocks);
-            limits[id] = blocks > 0 ? static_cast<unsigned int>(blocks) : 1u;
+            limits[id].imageUniforms = queryLimit(GL_MAX_FRAGMENT_IMAGE_UNIFORMS);
+            limits[id].bufferTexels = queryLimit(GL_MAX_TEXTURE_BUFFER_SIZE);
+            limits[id].storageBlocks = std::max(1u, queryLimit(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS));
         }
         osg::ref_ptr<osg::BufferData> buffer;
         if (!_buffer.lock(buffer) || !buffer->getBufferObject()) return;
@@ -156,6 +184,9 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
     osg::ref_ptr<osg::ShaderStorageBufferObject> sbo = new osg::ShaderStorageBufferObject;
     sbo->setUsage(GL_DYNAMIC_COPY);
     _buffer->setBufferObject(sbo.get());
+    _imageView = new osg::TextureBuffer;
+    _imageView->setInternalFormat(GL_RGBA32UI_EXT);
+    _imageView->setBufferData(_buffer.get());
 
     osg::Camera& c = *_camera;
     c.setName(name);
@@ -185,8 +216,25 @@ TriangleListPass::~TriangleListPass() = default;
 
 unsigned int TriangleListPass::fragmentStorageBlocks(unsigned int contextID)
 {
-    auto& limits = storageBlockLimits();
-    return contextID < limits.size() ? limits[contextID].load() : 0u;
+    auto& limits = contextLimits();
+    return contextID < limits.size() ? limits[contextID].storageBlocks.load() : 0u;
+}
+
+bool TriangleListPass::imageReadsFit(unsigned int contextID, unsigned int slots, std::size_t texels)
+{
+    auto& limits = contextLimits();
+    if (!imageReadsAllowed() || contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
+    return slots <= limits[contextID].imageUniforms && texels <= limits[contextID].bufferTexels;
+}
+
+void TriangleListPass::setImageReadsAllowed(bool allowed)
+{
+    imageReadsAllowed() = allowed;
+}
+
+bool TriangleListPass::getImageReadsAllowed()
+{
+    return imageReadsAllowed();
 }
 
 std::size_t TriangleListPass::getBufferSize() const
@@ -206,12 +254,14 @@ void TriangleListPass::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _camera->resizeGLObjectBuffers(maxSize);
     if (_buffer->getBufferObject()) _buffer->getBufferObject()->resizeGLObjectBuffers(maxSize);
+    _imageView->resizeGLObjectBuffers(maxSize);
 }
 
 void TriangleListPass::releaseGLObjects(osg::State* state) const
 {
     _camera->releaseGLObjects(state);
     if (_buffer->getBufferObject()) _buffer->getBufferObject()->releaseGLObjects(state);
+    _imageView->releaseGLObjects(state);
 }
 
 } // namespace osgShadowSilhouette

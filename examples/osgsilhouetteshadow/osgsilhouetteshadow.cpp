@@ -149,9 +149,9 @@ int main(int argc, char** argv)
                     s.lightsFound, s.lightsShadowed, s.shadowPasses, s.silhouetteEdges, s.zfailCasters, s.zpassCasters,
                     s.volumesRebuilt, s.extractionsSkipped);
         std::printf("viewport_pixels=%u silhouette_pixels=%lld volume_fragments=%lld volume_overdraw=%.3f "
-                    "blockers_tested=%u blockers_skipped=%u triangle_lists=%d\n",
+                    "blockers_tested=%u blockers_skipped=%u triangle_lists=%d list_images=%d\n",
                     s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
-                    s.blockersSkipped, s.triangleLists ? 1 : 0);
+                    s.blockersSkipped, s.triangleLists ? 1 : 0, s.listImages ? 1 : 0);
         std::printf("depth_passes_reused=%u silhouette_passes_reused=%u lights_skipped=%u volumes_culled=%u\n",
                     s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled);
     }

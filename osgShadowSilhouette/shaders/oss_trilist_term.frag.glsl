@@ -8,7 +8,7 @@
 // texture-space x, y and lies nearer to the light. Other pixels keep the shadow map's answer.
 // Linked into the receiver program; empty unless OSS_TRIANGLE_LISTS is defined.
 
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES)
 #ifdef OSS_TRIANGLE_LISTS
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
@@ -22,8 +22,18 @@
 #define OSS_MAX_LIST_SLOTS OSS_MAX_SHADOW_LIGHTS
 #endif
 
-// Each slot's whole list buffer (layout: oss_trilist.geom.glsl), read 16 bytes at a time.
+// Each slot's whole list buffer (layout: oss_trilist.geom.glsl), read 16 bytes at a time:
+// as an RGBA32UI image buffer (OSS_LIST_IMAGES, image unit = slot; where the context has the
+// image uniforms) or as a shader storage block (binding 1 + slot). The same on GPUs, but a
+// SIMD rasterizer (llvmpipe) loads a storage block lane by lane with a branch for each, an
+// image with one gather: the walks cost a third less (docs/shadow-volumes.md).
+#ifdef OSS_LIST_IMAGES
+layout(rgba32ui, binding = 0) readonly uniform uimageBuffer oss_listImages[OSS_MAX_LIST_SLOTS];
+#define OSS_LIST_LOAD(k, i) imageLoad(oss_listImages[k], int(i))
+#else
 layout(std430, binding = 1) readonly buffer OssListRead { uvec4 data4[]; } oss_lists[OSS_MAX_LIST_SLOTS];
+#define OSS_LIST_LOAD(k, i) oss_lists[k].data4[i]
+#endif
 uniform uvec4 oss_listCapacity[OSS_MAX_SHADOW_SLOTS];  // nodes, triangles, grid size, 0 of each slot's buffer
 uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective light
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
@@ -32,39 +42,39 @@ uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 uvec4 oss_listData4(int s, uint i)
 {
 #if OSS_MAX_LIST_SLOTS > 1
-    if (s == 1) return oss_lists[1].data4[i];
+    if (s == 1) return OSS_LIST_LOAD(1, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 2
-    if (s == 2) return oss_lists[2].data4[i];
+    if (s == 2) return OSS_LIST_LOAD(2, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 3
-    if (s == 3) return oss_lists[3].data4[i];
+    if (s == 3) return OSS_LIST_LOAD(3, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 4
-    if (s == 4) return oss_lists[4].data4[i];
+    if (s == 4) return OSS_LIST_LOAD(4, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 5
-    if (s == 5) return oss_lists[5].data4[i];
+    if (s == 5) return OSS_LIST_LOAD(5, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 6
-    if (s == 6) return oss_lists[6].data4[i];
+    if (s == 6) return OSS_LIST_LOAD(6, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 7
-    if (s == 7) return oss_lists[7].data4[i];
+    if (s == 7) return OSS_LIST_LOAD(7, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 8
-    if (s == 8) return oss_lists[8].data4[i];
+    if (s == 8) return OSS_LIST_LOAD(8, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 9
-    if (s == 9) return oss_lists[9].data4[i];
+    if (s == 9) return OSS_LIST_LOAD(9, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 10
-    if (s == 10) return oss_lists[10].data4[i];
+    if (s == 10) return OSS_LIST_LOAD(10, i);
 #endif
 #if OSS_MAX_LIST_SLOTS > 11
-    if (s == 11) return oss_lists[11].data4[i];
+    if (s == 11) return OSS_LIST_LOAD(11, i);
 #endif
-    return oss_lists[0].data4[i];
+    return OSS_LIST_LOAD(0, i);
 }
 
 // The i-th uint of slot s's buffer.

@@ -5,6 +5,8 @@
 #include "Classes.h"
 #include "GLTestSupport.h"
 
+#include <osgShadowSilhouette/TriangleListPass>
+
 #include <iostream>
 
 using osstest::ShadowedRender;
@@ -94,6 +96,28 @@ TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
     const ossref::Comparison masked = ossref::compareMasks(maskedLists, reference);
     EXPECT_LT(masked.wrongPixels, exact.wrongPixels);
     EXPECT_LT(masked.wrongPct, 0.015);
+}
+
+// The eye pass reads the lists as images where the context has the image uniforms (llvmpipe
+// has 32), as storage blocks otherwise; both views of one buffer give the same picture.
+TEST(HybridMethods, ListImagesAndStorageBlocksGiveTheSamePicture)
+{
+    ShadowedRender r("cubes", "hybrid", 512, 512, 384);
+    ASSERT_TRUE(r.valid());
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    ASSERT_TRUE(osgShadowSilhouette::TriangleListPass::getImageReadsAllowed());
+    const ossref::Mask images = r.mask();
+    EXPECT_TRUE(r.technique->getStatistics().listImages) << "GL_MAX_FRAGMENT_IMAGE_UNIFORMS is 32 here";
+    osgShadowSilhouette::TriangleListPass::setImageReadsAllowed(false);
+    const ossref::Mask blocks = r.mask();
+    EXPECT_FALSE(r.technique->getStatistics().listImages);
+    osgShadowSilhouette::TriangleListPass::setImageReadsAllowed(true);
+    const ossref::Comparison c = ossref::compareMasks(images, blocks);
+    ASSERT_TRUE(c.valid) << c.error;
+    EXPECT_EQ(c.wrongPixels, 0) << "the two reads of the lists differ";
+    const ossref::Comparison exact = ossref::compareMasks(images, r.reference());
+    EXPECT_LT(exact.wrongPct, 0.02) << exact.wrongPixels << " wrong pixels";
+    EXPECT_GT(exact.geometryPixels, 100000);
 }
 
 // The edge mask (HybridEdgeMask, on by default): twigs and gaps thinner than a texel of a
