@@ -145,6 +145,12 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         error = "--hybrid-method takes auto, stencil or lists";
         return false;
     }
+    if (a.read("--depth-prepass", o.depthPrepass) && o.depthPrepass != "auto" && o.depthPrepass != "on" &&
+        o.depthPrepass != "off")
+    {
+        error = "--depth-prepass takes auto, on or off";
+        return false;
+    }
     if (a.read("--polygon-offset", o.polygonOffsetFactor, o.polygonOffsetUnits) &&
         !(o.polygonOffsetFactor >= 0.0f && o.polygonOffsetUnits >= 0.0f))
     {
@@ -175,6 +181,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
+      << "    [--depth-prepass auto|on|off]\n"
       << "    [--moving-light]\n";
     return s.str();
 }

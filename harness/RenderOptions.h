@@ -45,6 +45,7 @@ struct RenderOptions
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
+    std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off
     float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
     float polygonOffsetUnits = -1.0f;
     bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)

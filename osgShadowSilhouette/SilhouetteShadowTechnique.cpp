@@ -4,6 +4,7 @@
 #include "ShaderSource.h"
 
 #include <osg/ColorMask>
+#include <osg/Depth>
 #include <osg/ComputeBoundsVisitor>
 #include <osg/BufferIndexBinding>
 #include <osg/CullFace>
@@ -11,9 +12,11 @@
 #include <osg/Image>
 #include <osg/BindImageTexture>
 #include <osg/PolygonOffset>
+#include <osg/Viewport>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
 #include <osgUtil/RenderStage>
+#include <osgUtil/StateGraph>
 
 #include <algorithm>
 #include <unordered_set>
@@ -268,7 +271,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling),
       _hybridMethod(copy._hybridMethod),
-      _hybridEdgeMask(copy._hybridEdgeMask)
+      _hybridEdgeMask(copy._hybridEdgeMask),
+      _depthPrepass(copy._depthPrepass)
 {
 }
 
@@ -411,6 +415,23 @@ void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)
     _hybridEdgeMask = flag;
 }
 
+void SilhouetteShadowTechnique::setDepthPrepass(DepthPrepass prepass)
+{
+    _depthPrepass = (prepass >= DEPTH_PREPASS_AUTO && prepass <= DEPTH_PREPASS_OFF) ? prepass : DEPTH_PREPASS_AUTO;
+}
+
+bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, std::size_t triangles,
+                                                 unsigned int slots, double viewportPixels) const
+{
+    const bool mapModes = mode == SHADOW_MAP || mode == SILHOUETTE_MAP || (mode == HYBRID && triangleLists);
+    if (!mapModes || _depthPrepass == DEPTH_PREPASS_OFF) return false;
+    if (_depthPrepass == DEPTH_PREPASS_ON) return true;
+    // The prepass transforms every triangle once more; it saves the eye pass's shading of
+    // hidden fragments, whose cost grows with the slots each fragment evaluates.
+    return mode == HYBRID && _useDefaultShading &&
+           double(triangles) * PREPASS_PIXELS_PER_TRIANGLE <= double(slots) * viewportPixels;
+}
+
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
@@ -487,6 +508,10 @@ void SilhouetteShadowTechnique::init()
     _volumeProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_VOLUME_FRAG));
 
     _depthPassStateSet = createDepthPassStateSet();
+    _prepassProgram = new osg::Program;
+    _prepassProgram->setName("osgShadowSilhouette depth prepass");
+    _prepassProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
+    _prepassProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
     _litDummyTexture = createLitTexture();
 
     TagBaseTextureVisitor tagger;
@@ -497,6 +522,16 @@ void SilhouetteShadowTechnique::init()
         _viewDataMap.clear(); // rebuilt with the new settings on the next cull
     }
     _dirty = false;
+}
+
+osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createPrepassStateSet() const
+{
+    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    ss->setAttributeAndModes(_prepassProgram.get(), overrideOn); // ftransform(), as the receivers' program
+    ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
+    ss->setRenderBinDetails(DEPTH_PREPASS_BIN, "RenderBin", osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
+    return ss;
 }
 
 osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet() const
@@ -534,6 +569,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
     if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
+    if (_prepassProgram) _prepassProgram->resizeGLObjectBuffers(maxSize);
     if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->resizeGLObjectBuffers(maxSize);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
@@ -559,6 +595,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     ++_glGeneration; // the maps are rendered again before they are read
     if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
     if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
+    if (_prepassProgram) _prepassProgram->releaseGLObjects(state);
     if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
     if (_silhouetteMapStateSet) _silhouetteMapStateSet->releaseGLObjects(state);
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
@@ -596,6 +633,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     osg::StateSet* ss = new osg::StateSet;
     vd->receiverStateSet = ss;
     vd->receiverPassStateSet = new osg::StateSet;
+    vd->prepassStateSet = createPrepassStateSet();
     if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
     const unsigned int slots = slotCapacity();
     ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
@@ -753,6 +791,15 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                                       osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
+    std::size_t casterTriangles = 0;
+    for (const Caster& caster : frame.casterList) casterTriangles += caster.mesh->getAdjacency().report.inputTriangles;
+    const osg::Viewport* eyeViewport = cv.getViewport();
+    stats.depthPrepass = usesDepthPrepass(frame.mode, frame.triangleLists, casterTriangles, std::max(1u, nextFreeSlot),
+                                          eyeViewport ? eyeViewport->width() * eyeViewport->height() : 0.0);
+    if (stats.depthPrepass)
+        cullDepthPrepass(cv, vd);
+    else
+        vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::DEPTH);
 
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     const unsigned int capacity = slotCapacity();
@@ -1064,6 +1111,75 @@ void SilhouetteShadowTechnique::cullEdgeMask(osgUtil::CullVisitor& cv, LightPass
     }
     silhouetteMap = pass.silhouettePass->getTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+}
+
+namespace {
+
+/** Whether the state graph `sg` lies under the state set `ss`. */
+bool under(const osgUtil::StateGraph* sg, const osg::StateSet* ss)
+{
+    for (; sg; sg = sg->_parent)
+        if (sg->getStateSet() == ss) return true;
+    return false;
+}
+
+/** Whether state set ss sets attribute `type`; above the receivers' state set only an
+ *  OVERRIDE one reaches the eye pass (the receivers' program and LEQUAL replace the rest). */
+bool setsAttribute(const osg::StateSet& ss, osg::StateAttribute::Type type, bool aboveReceivers)
+{
+    const osg::StateSet::RefAttributePair* pair = ss.getAttributePair(type);
+    return pair && (!aboveReceivers || (pair->second & osg::StateAttribute::OVERRIDE) != 0);
+}
+
+/** Whether the depth prepass draws the leaves of `sg` as the eye pass does: no state set on
+ *  their path (besides the prepass's and the receivers' own) sets a program (a vertex stage
+ *  of its own may place them elsewhere), an osg::Depth (the eye pass keeps that test, not
+ *  LEQUAL), blending, or a render bin after the opaque one or depth sorted (transparent:
+ *  their depth must not hide what shows through them). */
+bool prepassDraws(const osgUtil::StateGraph* sg, const osg::StateSet* prepass, const osg::StateSet* receivers)
+{
+    bool above = false;
+    for (; sg; sg = sg->_parent)
+    {
+        const osg::StateSet* ss = sg->getStateSet();
+        if (ss == receivers) above = true;
+        if (!ss || ss == prepass || ss == receivers) continue;
+        if (setsAttribute(*ss, osg::StateAttribute::PROGRAM, above) || setsAttribute(*ss, osg::StateAttribute::DEPTH, above))
+            return false;
+        if ((ss->getMode(GL_BLEND) & osg::StateAttribute::ON) != 0) return false;
+        if (ss->getRenderingHint() == osg::StateSet::TRANSPARENT_BIN) return false;
+        if (ss->useRenderBinDetails() && (ss->getBinNumber() > 0 || ss->getBinName() == "DepthSortedBin")) return false;
+    }
+    return true;
+}
+
+/** Removes from `bin` and the bins under it the prepass's state graphs (those under
+ *  `prepass`) that prepassDraws() rejects, and any that a protected render bin kept out of
+ *  the prepass's bin. */
+void prunePrepass(osgUtil::RenderBin& bin, const osg::StateSet* prepass, const osg::StateSet* receivers, bool prepassBin)
+{
+    osgUtil::RenderBin::StateGraphList& graphs = bin.getStateGraphList();
+    graphs.erase(std::remove_if(graphs.begin(), graphs.end(),
+                                [&](osgUtil::StateGraph* sg) {
+                                    return under(sg, prepass) && !(prepassBin && prepassDraws(sg, prepass, receivers));
+                                }),
+                 graphs.end());
+    for (auto& child : bin.getRenderBinList())
+        prunePrepass(*child.second, prepass, receivers,
+                     child.first == SilhouetteShadowTechnique::DEPTH_PREPASS_BIN);
+}
+
+} // namespace
+
+void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd)
+{
+    if (!vd.prepassDepth) vd.prepassDepth = new osg::Depth(osg::Depth::LEQUAL);
+    // Not OVERRIDE: a drawable's own osg::Depth stays, and the prepass leaves it out.
+    vd.receiverPassStateSet->setAttribute(vd.prepassDepth.get());
+    cullReceivers(cv, vd, vd.prepassStateSet.get());
+    if (osgUtil::RenderBin* bin = cv.getCurrentRenderBin())
+        if (osgUtil::RenderStage* stage = bin->getStage())
+            prunePrepass(*stage, vd.prepassStateSet.get(), vd.receiverStateSet.get(), false);
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)

@@ -106,6 +106,9 @@ int main(int argc, char** argv)
     {
         technique->setBlockerCulling(options.blockerCulling);
         technique->setHybridEdgeMask(options.hybridEdgeMask);
+        technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
+                                   : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF
+                                                                   : SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
         if (options.polygonOffsetFactor >= 0.0f)
         {
             technique->setPolygonOffsetFactor(options.polygonOffsetFactor);
@@ -152,8 +155,10 @@ int main(int argc, char** argv)
                     "blockers_tested=%u blockers_skipped=%u triangle_lists=%d list_images=%d\n",
                     s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
                     s.blockersSkipped, s.triangleLists ? 1 : 0, s.listImages ? 1 : 0);
-        std::printf("depth_passes_reused=%u silhouette_passes_reused=%u lights_skipped=%u volumes_culled=%u\n",
-                    s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled);
+        std::printf("depth_passes_reused=%u silhouette_passes_reused=%u lights_skipped=%u volumes_culled=%u "
+                    "depth_prepass=%d\n",
+                    s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled,
+                    s.depthPrepass ? 1 : 0);
     }
 
     if (!options.classes.empty() && technique)

@@ -119,6 +119,14 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
             t.setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
         else warnValue(key, value, "is not auto, stencil or lists; ignored");
     }
+    else if (k == "depthprepass")
+    {
+        const std::string m = lower(value);
+        if (m == "auto" || m == "depth_prepass_auto") t.setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
+        else if (m == "on" || m == "depth_prepass_on") t.setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
+        else if (m == "off" || m == "depth_prepass_off") t.setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_OFF);
+        else warnValue(key, value, "is not auto, on or off; ignored");
+    }
     else if (k == "usedefaultshading" || k == "blockerculling" || k == "hybridedgemask")
     {
         bool flag = true;
@@ -151,6 +159,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
         {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
         {"HybridEdgeMask=<on|off>", "HYBRID: also resolve exactly the pixels a silhouette edge crosses"},
+        {"DepthPrepass=<auto|on|off>", "Draw the receivers' depth before the eye pass (auto: HYBRID with triangle lists)"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

@@ -4,9 +4,15 @@
 // listed per light-space texel).
 #include "Classes.h"
 #include "GLTestSupport.h"
+#include "Meshes.h"
 
 #include <osgShadowSilhouette/TriangleListPass>
 
+#include <osg/Depth>
+#include <osg/Geode>
+#include <osg/Program>
+
+#include <cstring>
 #include <iostream>
 
 using osstest::ShadowedRender;
@@ -218,3 +224,117 @@ INSTANTIATE_TEST_SUITE_P(Scenes, HybridEdgeMaskOutline,
                          [](const ::testing::TestParamInfo<OutlineCase>& info) { return std::string(info.param.scene); });
 
 } // namespace
+
+// DepthPrepass: the eye pass first lays down the receivers' depth, so HYBRID's walks run once
+// per pixel. The picture is the same, byte for byte, with and without it.
+namespace {
+
+/** Pixels of two captures that differ. */
+long long differingPixels(const osg::Image& a, const osg::Image& b)
+{
+    if (a.s() != b.s() || a.t() != b.t() || a.getTotalSizeInBytes() != b.getTotalSizeInBytes()) return -1;
+    const unsigned int bytes = a.getPixelSizeInBits() / 8;
+    long long differ = 0;
+    for (unsigned int i = 0; i < a.getTotalSizeInBytes(); i += bytes)
+        if (std::memcmp(a.data() + i, b.data() + i, bytes) != 0) ++differ;
+    return differ;
+}
+
+osg::ref_ptr<osg::Image> capture(ShadowedRender& r, SilhouetteShadowTechnique::DepthPrepass prepass)
+{
+    r.technique->setDepthPrepass(prepass);
+    r.renderer->timeFrames(0, 2);
+    return r.renderer->renderAndCapture();
+}
+
+} // namespace
+
+TEST(DepthPrepass, AutomaticInHybridWithListsOnly)
+{
+    ShadowedRender r("default", "hybrid", 512, 512, 384);
+    ASSERT_TRUE(r.valid());
+    ASSERT_EQ(r.technique->getDepthPrepass(), SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
+    r.renderer->timeFrames(0, 1);
+    EXPECT_TRUE(r.technique->getStatistics().depthPrepass);
+    r.technique->setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_OFF);
+    r.renderer->timeFrames(0, 1);
+    EXPECT_FALSE(r.technique->getStatistics().depthPrepass);
+    r.technique->setDepthPrepass(static_cast<SilhouetteShadowTechnique::DepthPrepass>(7));
+    EXPECT_EQ(r.technique->getDepthPrepass(), SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO) << "invalid value";
+    // The stencil modes draw a depth pass of their own: never a prepass.
+    r.technique->setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+    r.renderer->timeFrames(0, 1);
+    EXPECT_FALSE(r.technique->getStatistics().depthPrepass);
+
+    // Many triangles against the pixels and slots: the prepass would cost more than it saves.
+    r.technique->setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
+    const SilhouetteShadowTechnique& t = *r.technique;
+    EXPECT_TRUE(t.usesDepthPrepass(SilhouetteShadowTechnique::HYBRID, true, 12000, 1, 1024 * 768));
+    EXPECT_FALSE(t.usesDepthPrepass(SilhouetteShadowTechnique::HYBRID, true, 355712, 4, 1024 * 768));
+    EXPECT_TRUE(t.usesDepthPrepass(SilhouetteShadowTechnique::HYBRID, true, 355712, 12, 1024 * 768));
+    EXPECT_FALSE(t.usesDepthPrepass(SilhouetteShadowTechnique::HYBRID, false, 100, 1, 1024 * 768))
+        << "stencil volumes: their own depth pass";
+
+    ShadowedRender m("default", "shadowmap", 512, 256, 192);
+    ASSERT_TRUE(m.valid());
+    m.renderer->timeFrames(0, 1);
+    EXPECT_FALSE(m.technique->getStatistics().depthPrepass) << "SHADOW_MAP's eye pass is cheap";
+    m.technique->setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
+    m.renderer->timeFrames(0, 1);
+    EXPECT_TRUE(m.technique->getStatistics().depthPrepass);
+}
+
+class DepthPrepassPicture : public ::testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(DepthPrepassPicture, IsTheSameWithAndWithout)
+{
+    ShadowedRender r(GetParam(), "hybrid", 512, 384, 288);
+    ASSERT_TRUE(r.valid());
+    osg::ref_ptr<osg::Image> without = capture(r, SilhouetteShadowTechnique::DEPTH_PREPASS_OFF);
+    osg::ref_ptr<osg::Image> with = capture(r, SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
+    EXPECT_TRUE(r.technique->getStatistics().depthPrepass);
+    EXPECT_EQ(differingPixels(*without, *with), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, DepthPrepassPicture, ::testing::Values("default", "cubes", "spheres"));
+
+// What the prepass cannot draw as the eye pass does stays out of it: a blended pane in a
+// transparent bin (its depth would hide what shows through it), a box with an osg::Depth of
+// its own (LESS: the eye pass would reject it at its own prepass depth) and a box with a
+// program of its own (its vertex stage moves it off the prepass's positions).
+TEST(DepthPrepass, LeavesOutWhatItCannotDrawAsTheEyePassDoes)
+{
+    ShadowedRender r("default", "hybrid", 512, 384, 288);
+    ASSERT_TRUE(r.valid());
+    osg::ref_ptr<osg::Geode> pane = new osg::Geode;
+    pane->addDrawable(osshar::makeBox(osg::Vec3(0.0f, -6.0f, 2.5f), osg::Vec3(6.0f, 0.05f, 4.0f)));
+    osg::StateSet* paneState = pane->getOrCreateStateSet();
+    paneState->setMode(GL_BLEND, osg::StateAttribute::ON);
+    paneState->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+    r.scene.content->addChild(pane.get());
+
+    osg::ref_ptr<osg::Geode> less = new osg::Geode;
+    less->addDrawable(osshar::makeBox(osg::Vec3(-2.0f, -2.0f, 0.75f), osg::Vec3(1.5f, 1.5f, 1.5f)));
+    less->getOrCreateStateSet()->setAttribute(new osg::Depth(osg::Depth::LESS));
+    r.scene.content->addChild(less.get());
+
+    osg::ref_ptr<osg::Geode> moved = new osg::Geode;
+    moved->addDrawable(osshar::makeBox(osg::Vec3(3.0f, 2.0f, 0.75f), osg::Vec3(1.5f, 1.5f, 1.5f)));
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->addShader(new osg::Shader(osg::Shader::VERTEX,
+                                       "#version 120\n"
+                                       "void main() { gl_Position = ftransform() + vec4(0.15, 0.0, 0.0, 0.0); "
+                                       "gl_FrontColor = vec4(0.9, 0.2, 0.2, 1.0); }\n"));
+    program->addShader(new osg::Shader(osg::Shader::FRAGMENT,
+                                       "#version 120\nvoid main() { gl_FragColor = gl_Color; }\n"));
+    moved->getOrCreateStateSet()->setAttributeAndModes(program.get());
+    r.scene.content->addChild(moved.get());
+
+    osg::ref_ptr<osg::Image> without = capture(r, SilhouetteShadowTechnique::DEPTH_PREPASS_OFF);
+    osg::ref_ptr<osg::Image> with = capture(r, SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
+    EXPECT_TRUE(r.technique->getStatistics().depthPrepass);
+    EXPECT_EQ(differingPixels(*without, *with), 0);
+}
