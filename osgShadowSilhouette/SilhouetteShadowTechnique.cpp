@@ -672,11 +672,13 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
         vd->listPerspective->setElement(slot, 0);
     }
+    vd->listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
                             vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
-                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get()})
+                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
+    ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
     vd->passes.resize(slots);
     vd->slotInUse.assign(slots, false);
@@ -1423,6 +1425,17 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_CUBE_FACES);
     vd.maskLight->set(static_cast<int>(_debugLight));
+    // The exact test's ray offset scales with the shadowed scene's bound, in eye space.
+    const osg::BoundingSphere& bound = _shadowedScene ? _shadowedScene->getBound() : osg::BoundingSphere();
+    if (bound.valid())
+    {
+        const osg::Matrixd& worldToEye = *cv.getModelViewMatrix();
+        const osg::Vec3d centre = bound.center() * worldToEye;
+        const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
+        vd.listRayFrame->set(osg::Vec4f(centre, float(shader::LIST_RAY_OFFSET_RADIUS * bound.radius() * scale)));
+    }
+    else
+        vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
 }
 
 } // namespace osgShadowSilhouette

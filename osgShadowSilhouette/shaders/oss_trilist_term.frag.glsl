@@ -37,6 +37,8 @@ layout(std430, binding = 1) readonly buffer OssListRead { uvec4 data4[]; } oss_l
 uniform uvec4 oss_listCapacity[OSS_MAX_SHADOW_SLOTS];  // nodes, triangles, grid size, 0 of each slot's buffer
 uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective light
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
+uniform vec4 oss_listRayFrame;            // eye-space centre of the shadowed scene's bound, offset at it
+uniform float oss_listRayOffsetPerDistance; // offset per unit of distance from that centre
 
 // The i-th vec4 of slot s's buffer (constant indices: see oss_shadow.frag.glsl).
 uvec4 oss_listData4(int s, uint i)
@@ -167,13 +169,31 @@ vec4 oss_listPoint(int s, vec4 eyePosition)
     return vec4(p.xy, q, front ? 1.0 : 0.0);
 }
 
+// Where the shadow ray of an eye-space position starts: off the surface along its geometric
+// normal, turned toward the camera, by a scale-aware offset (ShaderConstants: the radius of
+// the shadowed scene's bound times 1e-5, plus 1e-6 per unit of distance from its centre).
+// It is what a ray tracer's shadow ray does (and the exact reference's): points that close
+// to a shadow boundary take the answer of the offset point, not of a depth epsilon along the
+// light (which, for a directional light, leaves the ray's line where it was). Derivatives:
+// call it in uniform control flow.
+vec4 oss_listRayOrigin(vec4 eyePosition)
+{
+    vec3 p = eyePosition.xyz / eyePosition.w;
+    vec3 n = cross(dFdx(p), dFdy(p));
+    float len = length(n);
+    n = len > 0.0 ? n / len : vec3(0.0);
+    n = dot(n, p) > 0.0 ? -n : n;
+    float offset = oss_listRayFrame.w + oss_listRayOffsetPerDistance * length(p - oss_listRayFrame.xyz);
+    return vec4(p + n * offset, 1.0);
+}
+
 // The shadow term of slot s given its 2x2 PCF: exact where the PCF cannot be trusted
 // (oss_listUncertain), the PCF elsewhere (and where `walk` is false: the caller does not
 // need the exact answer there).
 float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk)
 {
     if (s >= OSS_MAX_LIST_SLOTS) return pcf;
-    vec4 p = oss_listPoint(s, eyePosition);
+    vec4 p = oss_listPoint(s, oss_listRayOrigin(eyePosition));
     bool front = p.w > 0.0;
     bool uncertain = front && oss_listUncertain(s, pcf, eyePosition);
     float lit = oss_listWalk(s, p.xy, p.z, walk && uncertain);

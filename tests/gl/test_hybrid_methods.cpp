@@ -65,6 +65,35 @@ INSTANTIATE_TEST_SUITE_P(
                std::to_string(info.param.mapSize);
     });
 
+// The lists' shadow ray starts off the surface along the geometric normal by a scale-aware
+// offset, as a ray tracer's does: the points that lie within it of a shadow boundary (tree:
+// the twigs' shadows on the ground, bunny: the tips of its self-shadows) take the answer of
+// the offset point. Started on the surface itself with only a depth epsilon along the light,
+// HYBRID matched SHADOW_VOLUME's residue instead (tree 54 wrong pixels at 1024x768, bunny
+// 18), which is the answer for the point itself; with the offset, 12 and 0.
+class HybridRayOffset : public ::testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(HybridRayOffset, ListsDecidePointsAtABoundaryAsARayTracerDoes)
+{
+    ShadowedRender r(GetParam(), "hybrid", 256, 1024, 768);
+    ASSERT_TRUE(r.valid());
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    const ossref::Mask reference = r.reference();
+    const ossref::Comparison lists = ossref::compareMasks(r.mask(), reference);
+    ASSERT_TRUE(lists.valid) << lists.error;
+    r.technique->setMode(SilhouetteShadowTechnique::SHADOW_VOLUME);
+    const ossref::Comparison volumes = ossref::compareMasks(r.mask(), reference);
+    std::cout << GetParam() << ": lists " << lists.wrongPixels << " wrong pixels, volumes " << volumes.wrongPixels
+              << "\n";
+    EXPECT_LT(lists.wrongPct, 0.005) << lists.wrongPixels << " wrong pixels of " << lists.geometryPixels;
+    EXPECT_LE(3 * lists.wrongPixels, volumes.wrongPixels)
+        << "the volumes answer for the point on the surface: " << volumes.wrongPixels << " wrong pixels";
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, HybridRayOffset, ::testing::Values("tree", "bunny"));
+
 TEST(HybridMethods, AutoUsesTriangleListsWhereTheContextHasThem)
 {
     ShadowedRender r("default", "hybrid", 512, 256, 192);
@@ -76,11 +105,16 @@ TEST(HybridMethods, AutoUsesTriangleListsWhereTheContextHasThem)
         << "no shadow volumes with triangle lists";
 }
 
+// The two methods resolve the same silhouette pixels and agree there, but for the points
+// within the lists' shadow-ray offset of a boundary (HybridRayOffset): those the volumes
+// answer for the point on the surface, the lists as the exact reference does. So they may
+// differ by those pixels (15 of 142,000 here), and the lists are the closer to the reference.
 TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
 {
     ShadowedRender r("cubes", "hybrid", 1024, 512, 384);
     ASSERT_TRUE(r.valid());
-    // The same silhouette pixels (the PCF test alone): the two methods agree.
+    const ossref::Mask reference = r.reference();
+    // The same silhouette pixels (the PCF test alone).
     r.technique->setHybridEdgeMask(false);
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
     const ossref::Mask volumes = r.mask();
@@ -88,20 +122,21 @@ TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
     const ossref::Mask lists = r.mask();
     const ossref::Comparison c = ossref::compareMasks(lists, volumes);
     ASSERT_TRUE(c.valid) << c.error;
-    EXPECT_LT(c.wrongPct, 0.01) << c.wrongPixels << " pixels differ";
-    const ossref::Mask reference = r.reference();
+    EXPECT_LT(c.wrongPct, 0.025) << c.wrongPixels << " pixels differ";
     const ossref::Comparison exact = ossref::compareMasks(lists, reference);
     EXPECT_LT(exact.wrongPct, 0.05) << "cubes at a 1024 map: casters thinner than a texel are missed by both";
+    EXPECT_LE(exact.wrongPixels, ossref::compareMasks(volumes, reference).wrongPixels);
     // With the edge mask both also resolve those, and still agree: fewer wrong pixels.
     r.technique->setHybridEdgeMask(true);
     const ossref::Mask maskedLists = r.mask();
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
     const ossref::Mask maskedVolumes = r.mask();
     const ossref::Comparison agree = ossref::compareMasks(maskedLists, maskedVolumes);
-    EXPECT_LT(agree.wrongPct, 0.01) << agree.wrongPixels << " pixels differ";
+    EXPECT_LT(agree.wrongPct, 0.025) << agree.wrongPixels << " pixels differ";
     const ossref::Comparison masked = ossref::compareMasks(maskedLists, reference);
     EXPECT_LT(masked.wrongPixels, exact.wrongPixels);
-    EXPECT_LT(masked.wrongPct, 0.015);
+    EXPECT_LT(masked.wrongPct, 0.01);
+    EXPECT_LT(masked.wrongPixels, ossref::compareMasks(maskedVolumes, reference).wrongPixels);
 }
 
 // The eye pass reads the lists as images where the context has the image uniforms (llvmpipe
