@@ -39,6 +39,7 @@ void check(const osg::Node* node)
     // The setters' guarantees (README, Properties).
     if (t->getShadowMapSize() < 1 || t->getShadowMapSize() > 16384) std::abort();
     if (!std::isfinite(t->getPolygonOffsetFactor()) || !std::isfinite(t->getPolygonOffsetUnits())) std::abort();
+    if (!std::isfinite(t->getShadowRayOffset()) || t->getShadowRayOffset() < 0.0f) std::abort();
     if (t->getMaxShadowLights() < 1 || t->getMaxShadowLights() > 8) std::abort();
     if (!osgShadowSilhouette::SilhouetteShadowTechnique::isModeAvailable(t->getMode()) &&
         t->getEffectiveMode() != osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_MAP)

@@ -151,6 +151,11 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         error = "--depth-prepass takes auto, on or off";
         return false;
     }
+    if (a.read("--shadow-ray-offset", o.shadowRayOffset) && !(o.shadowRayOffset >= 0.0f && std::isfinite(o.shadowRayOffset)))
+    {
+        error = "--shadow-ray-offset takes a finite number of at least 0";
+        return false;
+    }
     if (a.read("--polygon-offset", o.polygonOffsetFactor, o.polygonOffsetUnits) &&
         !(o.polygonOffsetFactor >= 0.0f && o.polygonOffsetUnits >= 0.0f))
     {
@@ -181,7 +186,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
-      << "    [--depth-prepass auto|on|off]\n"
+      << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F]\n"
       << "    [--moving-light]\n";
     return s.str();
 }

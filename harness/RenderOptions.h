@@ -46,6 +46,7 @@ struct RenderOptions
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off
+    float shadowRayOffset = -1.0f;     ///< --shadow-ray-offset F (negative: the technique's default)
     float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
     float polygonOffsetUnits = -1.0f;
     bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)

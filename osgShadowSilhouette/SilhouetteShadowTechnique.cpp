@@ -272,7 +272,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _blockerCulling(copy._blockerCulling),
       _hybridMethod(copy._hybridMethod),
       _hybridEdgeMask(copy._hybridEdgeMask),
-      _depthPrepass(copy._depthPrepass)
+      _depthPrepass(copy._depthPrepass),
+      _shadowRayOffset(copy._shadowRayOffset)
 {
 }
 
@@ -418,6 +419,17 @@ void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)
 void SilhouetteShadowTechnique::setDepthPrepass(DepthPrepass prepass)
 {
     _depthPrepass = (prepass >= DEPTH_PREPASS_AUTO && prepass <= DEPTH_PREPASS_OFF) ? prepass : DEPTH_PREPASS_AUTO;
+}
+
+void SilhouetteShadowTechnique::setShadowRayOffset(float offset)
+{
+    if (!std::isfinite(offset) || offset < 0.0f)
+    {
+        OSG_WARN << "osgShadowSilhouette: ShadowRayOffset " << offset
+                 << " is not a finite number of at least 0; using " << DEFAULT_SHADOW_RAY_OFFSET << std::endl;
+        offset = DEFAULT_SHADOW_RAY_OFFSET;
+    }
+    _shadowRayOffset = offset;
 }
 
 bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, std::size_t triangles,
@@ -1432,7 +1444,7 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
         const osg::Matrixd& worldToEye = *cv.getModelViewMatrix();
         const osg::Vec3d centre = bound.center() * worldToEye;
         const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
-        vd.listRayFrame->set(osg::Vec4f(centre, float(shader::LIST_RAY_OFFSET_RADIUS * bound.radius() * scale)));
+        vd.listRayFrame->set(osg::Vec4f(centre, float(double(_shadowRayOffset) * bound.radius() * scale)));
     }
     else
         vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));

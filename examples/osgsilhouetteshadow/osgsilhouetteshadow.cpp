@@ -109,6 +109,7 @@ int main(int argc, char** argv)
         technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
                                    : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF
                                                                    : SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
+        if (options.shadowRayOffset >= 0.0f) technique->setShadowRayOffset(options.shadowRayOffset);
         if (options.polygonOffsetFactor >= 0.0f)
         {
             technique->setPolygonOffsetFactor(options.polygonOffsetFactor);

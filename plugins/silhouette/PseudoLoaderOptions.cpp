@@ -102,12 +102,13 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
         if (parseDebugView(value, view)) t.setDebugView(view);
         else warnValue(key, value, "is not a debug view (none, mask); ignored");
     }
-    else if (k == "polygonoffsetfactor" || k == "polygonoffsetunits")
+    else if (k == "polygonoffsetfactor" || k == "polygonoffsetunits" || k == "shadowrayoffset")
     {
         float f = 0.0f;
         if (!parseFloat(value, f)) warnValue(key, value, "is not a number; ignored");
         else if (k == "polygonoffsetfactor") t.setPolygonOffsetFactor(f);
-        else t.setPolygonOffsetUnits(f);
+        else if (k == "polygonoffsetunits") t.setPolygonOffsetUnits(f);
+        else t.setShadowRayOffset(f);
     }
     else if (k == "hybridmethod")
     {
@@ -160,6 +161,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
         {"HybridEdgeMask=<on|off>", "HYBRID: also resolve exactly the pixels a silhouette edge crosses"},
         {"DepthPrepass=<auto|on|off>", "Draw the receivers' depth before the eye pass (auto: HYBRID with triangle lists)"},
+        {"ShadowRayOffset=<f>", "HYBRID's exact test: shadow rays start this fraction of the scene's radius off the surface"},
         {"Report=<file>", "Write the technique's statistics of every frame to <file>"},
     };
     return options;

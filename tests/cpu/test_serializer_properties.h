@@ -55,6 +55,7 @@ inline const std::vector<PropertyRow>& propertyRows()
         OSS_PROPERTY_ROW(HybridMethod, Technique::HYBRID_TRIANGLE_LISTS),
         OSS_PROPERTY_ROW(HybridEdgeMask, false),
         OSS_PROPERTY_ROW(DepthPrepass, Technique::DEPTH_PREPASS_OFF),
+        OSS_PROPERTY_ROW(ShadowRayOffset, 2.5e-4f),
     };
     return rows;
 }

@@ -90,6 +90,14 @@ TEST_P(HybridRayOffset, ListsDecidePointsAtABoundaryAsARayTracerDoes)
     EXPECT_LT(lists.wrongPct, 0.005) << lists.wrongPixels << " wrong pixels of " << lists.geometryPixels;
     EXPECT_LE(3 * lists.wrongPixels, volumes.wrongPixels)
         << "the volumes answer for the point on the surface: " << volumes.wrongPixels << " wrong pixels";
+
+    // ShadowRayOffset 0: the ray starts on the surface again (but for the float-precision
+    // term), and the lists answer as the volumes do.
+    r.technique->setMode(SilhouetteShadowTechnique::HYBRID);
+    r.technique->setShadowRayOffset(0.0f);
+    const ossref::Comparison onSurface = ossref::compareMasks(r.mask(), reference);
+    EXPECT_GT(onSurface.wrongPixels, 2 * lists.wrongPixels + 5) << "the offset decides the pixels at a boundary";
+    EXPECT_LT(onSurface.wrongPixels, volumes.wrongPixels + volumes.wrongPixels / 2 + 5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, HybridRayOffset, ::testing::Values("tree", "bunny"));

@@ -186,7 +186,8 @@ TEST(PseudoLoader, AppliesTheOptionString)
     osg::ref_ptr<osgShadow::ShadowedScene> scene = load(
         modelWithoutLight() + ".silhouette",
         "ShadowMapSize=1024 Mode=volume DebugView=mask DebugLight=0 LightNum=0 MaxShadowLights=2 "
-        "BaseTextureUnit=6 PolygonOffsetFactor=2 PolygonOffsetUnits=8 UseDefaultShading=off SomeOtherPlugin=1");
+        "BaseTextureUnit=6 PolygonOffsetFactor=2 PolygonOffsetUnits=8 UseDefaultShading=off ShadowRayOffset=3e-5 "
+        "SomeOtherPlugin=1");
     Technique* t = techniqueOf(scene.get());
     ASSERT_NE(t, nullptr);
     EXPECT_EQ(t->getShadowMapSize(), 1024u);
@@ -198,6 +199,7 @@ TEST(PseudoLoader, AppliesTheOptionString)
     EXPECT_FLOAT_EQ(t->getPolygonOffsetFactor(), 2.0f);
     EXPECT_FLOAT_EQ(t->getPolygonOffsetUnits(), 8.0f);
     EXPECT_FALSE(t->getUseDefaultShading());
+    EXPECT_FLOAT_EQ(t->getShadowRayOffset(), 3e-5f);
 }
 
 TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)
