@@ -793,6 +793,12 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.receiverStateSet->setDefine(shader::DEFINE_LIST_IMAGES);
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_LIST_IMAGES);
+    stats.listBlockHeads = stats.listImages &&
+                           TriangleListPass::blockHeadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot));
+    if (stats.listBlockHeads)
+        vd.receiverStateSet->setDefine(shader::DEFINE_LIST_BLOCK_HEADS);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_LIST_BLOCK_HEADS);
     stats.triangleLists = frame.triangleLists;
     const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
     if (frame.triangleLists)

@@ -51,6 +51,9 @@ void memoryBarrier(osg::RenderInfo& info)
 #ifndef GL_MAX_FRAGMENT_IMAGE_UNIFORMS
 #define GL_MAX_FRAGMENT_IMAGE_UNIFORMS 0x90CE
 #endif
+#ifndef GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES
+#define GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES 0x8F39
+#endif
 #ifndef GL_MAX_TEXTURE_BUFFER_SIZE
 #define GL_MAX_TEXTURE_BUFFER_SIZE 0x8C2B
 #endif
@@ -61,6 +64,7 @@ struct ContextLimits
     std::atomic<unsigned int> storageBlocks{0}; ///< GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS
     std::atomic<unsigned int> imageUniforms{0}; ///< GL_MAX_FRAGMENT_IMAGE_UNIFORMS
     std::atomic<unsigned int> bufferTexels{0};  ///< GL_MAX_TEXTURE_BUFFER_SIZE
+    std::atomic<unsigned int> outputResources{0}; ///< GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES
 };
 
 std::vector<ContextLimits>& contextLimits()
@@ -70,6 +74,12 @@ std::vector<ContextLimits>& contextLimits()
 }
 
 std::atomic<bool>& imageReadsAllowed()
+{
+    static std::atomic<bool> allowed{true};
+    return allowed;
+}
+
+std::atomic<bool>& blockHeadsAllowed()
 {
     static std::atomic<bool> allowed{true};
     return allowed;
@@ -100,6 +110,7 @@ public:
         {
             limits[id].imageUniforms = queryLimit(GL_MAX_FRAGMENT_IMAGE_UNIFORMS);
             limits[id].bufferTexels = queryLimit(GL_MAX_TEXTURE_BUFFER_SIZE);
+            limits[id].outputResources = queryLimit(GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES);
             limits[id].storageBlocks = std::max(1u, queryLimit(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS));
         }
         osg::ref_ptr<osg::BufferData> buffer;
@@ -225,6 +236,23 @@ bool TriangleListPass::imageReadsFit(unsigned int contextID, unsigned int slots,
     auto& limits = contextLimits();
     if (!imageReadsAllowed() || contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
     return slots <= limits[contextID].imageUniforms && texels <= limits[contextID].bufferTexels;
+}
+
+bool TriangleListPass::blockHeadsFit(unsigned int contextID, unsigned int slots)
+{
+    auto& limits = contextLimits();
+    if (!blockHeadsAllowed() || contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
+    return slots <= limits[contextID].storageBlocks && 2u * slots + 1u <= limits[contextID].outputResources;
+}
+
+void TriangleListPass::setBlockHeadsAllowed(bool allowed)
+{
+    blockHeadsAllowed() = allowed;
+}
+
+bool TriangleListPass::getBlockHeadsAllowed()
+{
+    return blockHeadsAllowed();
 }
 
 void TriangleListPass::setImageReadsAllowed(bool allowed)

@@ -148,23 +148,37 @@ TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
 }
 
 // The eye pass reads the lists as images where the context has the image uniforms (llvmpipe
-// has 32), as storage blocks otherwise; both views of one buffer give the same picture.
+// has 32), as storage blocks otherwise, and each walk's prologue from the storage blocks where
+// the context has the resources for both (OSS_LIST_BLOCK_HEADS); all views of one buffer give
+// the same picture.
 TEST(HybridMethods, ListImagesAndStorageBlocksGiveTheSamePicture)
 {
+    using osgShadowSilhouette::TriangleListPass;
     ShadowedRender r("cubes", "hybrid", 512, 512, 384);
     ASSERT_TRUE(r.valid());
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
-    ASSERT_TRUE(osgShadowSilhouette::TriangleListPass::getImageReadsAllowed());
-    const ossref::Mask images = r.mask();
+    ASSERT_TRUE(TriangleListPass::getImageReadsAllowed());
+    ASSERT_TRUE(TriangleListPass::getBlockHeadsAllowed());
+    const ossref::Mask heads = r.mask();
     EXPECT_TRUE(r.technique->getStatistics().listImages) << "GL_MAX_FRAGMENT_IMAGE_UNIFORMS is 32 here";
-    osgShadowSilhouette::TriangleListPass::setImageReadsAllowed(false);
+    EXPECT_TRUE(r.technique->getStatistics().listBlockHeads) << "GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES is 280 here";
+    TriangleListPass::setBlockHeadsAllowed(false);
+    const ossref::Mask images = r.mask();
+    EXPECT_TRUE(r.technique->getStatistics().listImages);
+    EXPECT_FALSE(r.technique->getStatistics().listBlockHeads);
+    TriangleListPass::setBlockHeadsAllowed(true);
+    TriangleListPass::setImageReadsAllowed(false);
     const ossref::Mask blocks = r.mask();
     EXPECT_FALSE(r.technique->getStatistics().listImages);
-    osgShadowSilhouette::TriangleListPass::setImageReadsAllowed(true);
+    EXPECT_FALSE(r.technique->getStatistics().listBlockHeads) << "the prologue's blocks come only with the images";
+    TriangleListPass::setImageReadsAllowed(true);
     const ossref::Comparison c = ossref::compareMasks(images, blocks);
     ASSERT_TRUE(c.valid) << c.error;
-    EXPECT_EQ(c.wrongPixels, 0) << "the two reads of the lists differ";
-    const ossref::Comparison exact = ossref::compareMasks(images, r.reference());
+    EXPECT_EQ(c.wrongPixels, 0) << "the image and storage-block reads of the lists differ";
+    const ossref::Comparison h = ossref::compareMasks(heads, images);
+    ASSERT_TRUE(h.valid) << h.error;
+    EXPECT_EQ(h.wrongPixels, 0) << "the prologue's storage-block reads change the picture";
+    const ossref::Comparison exact = ossref::compareMasks(heads, r.reference());
     EXPECT_LT(exact.wrongPct, 0.02) << exact.wrongPixels << " wrong pixels";
     EXPECT_GT(exact.geometryPixels, 100000);
 }
