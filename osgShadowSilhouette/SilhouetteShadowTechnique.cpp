@@ -43,6 +43,8 @@ enum WarningKey
     WARN_FACE_SLOTS,
     WARN_NO_TRIANGLE_LISTS,
     WARN_LIST_SLOTS,
+    WARN_LIST_OVERFLOW,
+    WARN_LIST_FULL,
     WARN_CONTEXT_MAP_SIZE,
 };
 
@@ -1078,10 +1080,32 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
     std::size_t triangles = 0;
     for (const Caster& caster : frame.casterList) triangles += caster.mesh->getAdjacency().report.inputTriangles;
     const unsigned int grid = TriangleListPass::MAX_GRID_SIZE;
-    if (!pass.listPass || !pass.listPass->fits(grid, triangles))
+    // A build that listed more than the pass holds (read back a frame or two later) left that
+    // slot's silhouette pixels to the shadow map: rebuild with room for what it needed.
+    std::size_t neededNodes = 0, neededTriangles = 0;
+    bool grow = false;
+    if (pass.listPass && pass.listPass->overflowed(neededNodes, neededTriangles))
+    {
+        const std::size_t nodes = std::min(neededNodes + neededNodes / 4, TriangleListPass::MAX_NODES);
+        const std::size_t tris = std::min(neededTriangles, TriangleListPass::MAX_TRIANGLES);
+        grow = nodes > pass.listPass->getNodeCapacity() || tris > pass.listPass->getTriangleCapacity();
+        warnOnce(grow ? WARN_LIST_OVERFLOW : WARN_LIST_FULL,
+                 "HYBRID: the triangle lists of shadow slot " + std::to_string(slot) + " needed " +
+                     std::to_string(neededNodes) + " nodes and " + std::to_string(neededTriangles) +
+                     " triangles, with room for " + std::to_string(pass.listPass->getNodeCapacity()) + " and " +
+                     std::to_string(pass.listPass->getTriangleCapacity()) +
+                     "; that light's silhouette pixels took the shadow map's answer" +
+                     (grow ? std::string("; the lists are rebuilt larger")
+                           : "; the lists cannot grow further (" + std::to_string(TriangleListPass::MAX_NODES) +
+                                 " nodes, " + std::to_string(TriangleListPass::MAX_TRIANGLES) + " triangles)"));
+        triangles = std::max(triangles, tris);
+        neededNodes = nodes;
+    }
+    if (!pass.listPass || !pass.listPass->fits(grid, triangles) || grow)
     {
         pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
-                                             "osgShadowSilhouette triangle lists " + std::to_string(slot));
+                                             "osgShadowSilhouette triangle lists " + std::to_string(slot),
+                                             grow ? neededNodes : 0);
         pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
         pass.listRendered = PassInputs();
     }
@@ -1101,6 +1125,8 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         cv.setTraversalMask(mask);
         pass.listRendered = pass.rendered;
     }
+    // The counts of a finished build come back through the eye pass of a later frame.
+    if (pass.listPass->countPending()) pass.listPass->getPollNode()->accept(cv);
     osg::StateSet& ss = *vd.receiverStateSet;
     const unsigned int binding = shader::LIST_READ_BINDING + slot;
     auto* bound = dynamic_cast<osg::ShaderStorageBufferBinding*>(

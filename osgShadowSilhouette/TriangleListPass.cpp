@@ -8,8 +8,12 @@
 #include <osg/observer_ptr>
 #include <osgUtil/CullVisitor>
 
+#include <OpenThreads/Mutex>
+#include <OpenThreads/ScopedLock>
+#include <osg/Geode>
 #include <algorithm>
 #include <atomic>
+#include <map>
 #include <vector>
 
 #ifndef GL_SHADER_STORAGE_BARRIER_BIT
@@ -77,6 +81,12 @@ std::atomic<bool>& imageReadsAllowed()
 {
     static std::atomic<bool> allowed{true};
     return allowed;
+}
+
+std::atomic<unsigned int>& nodeReservePerTexel()
+{
+    static std::atomic<unsigned int> nodes{3};
+    return nodes;
 }
 
 std::atomic<bool>& blockHeadsAllowed()
@@ -149,10 +159,130 @@ private:
 };
 
 /** Makes the lists visible to the eye pass that reads them. */
+} // namespace
+
+/** The counters of the newest builds on their way back (per context: a small buffer and a
+ *  fence), and the last counts read. */
+struct TriangleListPass::Readback : public osg::Referenced
+{
+    using CopyBufferSubData = void(GL_APIENTRY*)(GLenum, GLenum, GLintptr, GLintptr, GLsizeiptr);
+    struct PerContext
+    {
+        GLuint buffer = 0;
+        GLsync fence = nullptr;
+    };
+    OpenThreads::Mutex mutex;
+    std::map<unsigned int, PerContext> contexts;
+    std::atomic<bool> pending{false};
+    std::atomic<bool> known{false};
+    std::atomic<std::size_t> nodes{0}, triangles{0};
+    CopyBufferSubData copy = nullptr;
+    bool looked = false;
+
+    /** After a build: the header's copy and a fence. */
+    void request(osg::RenderInfo& info, osg::BufferData* data)
+    {
+        const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+        const unsigned int id = info.getContextID();
+        if (!ext || !data || !data->getBufferObject() || !ext->glFenceSync || !ext->glGenBuffers ||
+            !ext->glMemoryBarrier)
+            return;
+        osg::GLBufferObject* gl = data->getBufferObject()->getOrCreateGLBufferObject(id);
+        if (!gl) return;
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(mutex);
+        if (!looked)
+        {
+            copy = reinterpret_cast<CopyBufferSubData>(osg::getGLExtensionFuncPtr("glCopyBufferSubData"));
+            looked = true;
+        }
+        if (!copy) return;
+        PerContext& pc = contexts[id];
+        if (pc.fence) return; // an older build's counts are still on their way: read those first
+        if (!pc.buffer)
+        {
+            ext->glGenBuffers(1, &pc.buffer);
+            ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
+            ext->glBufferData(GL_COPY_WRITE_BUFFER, 2 * sizeof(GLuint), nullptr, GL_STREAM_READ);
+            ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+        }
+        ext->glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // the shaders' atomics, before the copy
+        ext->glBindBuffer(GL_COPY_READ_BUFFER, gl->getGLObjectID());
+        ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
+        copy(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(gl->getOffset(data->getBufferIndex())), 0,
+             2 * sizeof(GLuint));
+        ext->glBindBuffer(GL_COPY_READ_BUFFER, 0);
+        ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+        pc.fence = ext->glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        pending = pc.fence != nullptr;
+    }
+
+    /** In a later frame: the counts, where the GPU is past the fence (never waits). */
+    void poll(osg::RenderInfo& info)
+    {
+        const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+        if (!ext || !ext->glClientWaitSync || !ext->glGetBufferSubData) return;
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(mutex);
+        auto it = contexts.find(info.getContextID());
+        if (it == contexts.end() || !it->second.fence) return;
+        PerContext& pc = it->second;
+        const GLenum status = ext->glClientWaitSync(pc.fence, 0, 0);
+        if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) return;
+        ext->glDeleteSync(pc.fence);
+        pc.fence = nullptr;
+        GLuint counts[2] = {0, 0};
+        ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
+        ext->glGetBufferSubData(GL_COPY_WRITE_BUFFER, 0, sizeof(counts), counts);
+        ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+        nodes = counts[0];
+        triangles = counts[1];
+        known = true;
+        pending = false;
+    }
+};
+
+namespace {
+
+/** After the build: the barrier for the eye pass, and the counters' read-back. */
 class FinalBarrier : public osg::Camera::DrawCallback
 {
 public:
-    void operator()(osg::RenderInfo& info) const override { memoryBarrier(info); }
+    FinalBarrier(osg::BufferData* buffer, TriangleListPass::Readback* readback) : _buffer(buffer), _readback(readback) {}
+    void operator()(osg::RenderInfo& info) const override
+    {
+        memoryBarrier(info);
+        osg::ref_ptr<osg::BufferData> buffer;
+        if (_buffer.lock(buffer)) _readback->request(info, buffer.get());
+    }
+
+private:
+    osg::observer_ptr<osg::BufferData> _buffer;
+    osg::ref_ptr<TriangleListPass::Readback> _readback;
+};
+
+/** Polls the read-back at its place in the eye pass. */
+class PollDrawable : public osg::Drawable
+{
+public:
+    explicit PollDrawable(TriangleListPass::Readback* readback) : _readback(readback)
+    {
+        setUseDisplayList(false);
+        setCullingActive(false);
+        setDataVariance(osg::Object::DYNAMIC);
+    }
+    PollDrawable(const PollDrawable& d, const osg::CopyOp& op) : osg::Drawable(d, op), _readback(d._readback) {}
+    osg::Object* cloneType() const override { return new PollDrawable(nullptr); }
+    osg::Object* clone(const osg::CopyOp& op) const override { return new PollDrawable(*this, op); }
+    const char* libraryName() const override { return "osgShadowSilhouette"; }
+    const char* className() const override { return "TriangleListPollDrawable"; }
+    void drawImplementation(osg::RenderInfo& info) const override
+    {
+        if (_readback) _readback->poll(info);
+    }
+    // No bounds: it draws nothing (see GpuQueries.cpp's CallDrawable).
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(); }
+
+private:
+    osg::ref_ptr<TriangleListPass::Readback> _readback;
 };
 
 osg::ref_ptr<osg::Program> program(const char* name, const char* vert, const char* geom, const char* frag)
@@ -182,14 +312,16 @@ osg::ref_ptr<osg::StateSet> TriangleListPass::createSharedStateSet()
 }
 
 TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, const osg::StateSet& shared,
-                                   const std::string& name)
-    : _grid(grid), _camera(new osg::Camera), _perspective(new osg::Uniform(shader::LIST_PERSPECTIVE, false))
+                                   const std::string& name, std::size_t nodes)
+    : _grid(grid), _camera(new osg::Camera), _perspective(new osg::Uniform(shader::LIST_PERSPECTIVE, false)),
+      _readback(new Readback)
 {
     // Room for every triangle (with a margin for growth) and for about three triangles per
     // texel plus four texels per triangle.
-    _triangleCapacity = static_cast<unsigned int>(std::min<std::size_t>(triangles + triangles / 4 + 64, 1u << 22));
-    _nodeCapacity = static_cast<unsigned int>(
-        std::min<std::size_t>(std::size_t(grid) * grid * 3 + std::size_t(_triangleCapacity) * 4, 1u << 24));
+    _triangleCapacity = static_cast<unsigned int>(std::min<std::size_t>(triangles + triangles / 4 + 64, MAX_TRIANGLES));
+    _nodeCapacity = static_cast<unsigned int>(std::min<std::size_t>(
+        std::max(nodes, std::size_t(grid) * grid * nodeReservePerTexel() + std::size_t(_triangleCapacity) * 4),
+        MAX_NODES));
     _nodeCapacity += _nodeCapacity % 2; // the triangles start on a 16-byte boundary
     _buffer = new osg::UIntArray(trianglesOffset() + 12 * std::size_t(_triangleCapacity));
     osg::ref_ptr<osg::ShaderStorageBufferObject> sbo = new osg::ShaderStorageBufferObject;
@@ -212,7 +344,11 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
     c.setViewport(0, 0, grid, grid);
     c.attach(osg::Camera::COLOR_BUFFER, GL_R8); // a render target for the rasterizer; nothing is written
     c.setInitialDrawCallback(new ClearLists(_buffer.get(), countsOffset() + std::size_t(grid) * grid));
-    c.setFinalDrawCallback(new FinalBarrier);
+    c.setFinalDrawCallback(new FinalBarrier(_buffer.get(), _readback.get()));
+    osg::ref_ptr<osg::Geode> poll = new osg::Geode;
+    poll->addDrawable(new PollDrawable(_readback.get()));
+    poll->setCullingActive(false);
+    _pollNode = poll;
     osg::StateSet* ss = c.getStateSet();
     const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
     ss->setAttributeAndModes(new osg::ShaderStorageBufferBinding(0, _buffer.get(), 0, getBufferSize()), on);
@@ -263,6 +399,29 @@ void TriangleListPass::setImageReadsAllowed(bool allowed)
 bool TriangleListPass::getImageReadsAllowed()
 {
     return imageReadsAllowed();
+}
+
+bool TriangleListPass::countPending() const
+{
+    return _readback->pending.load();
+}
+
+void TriangleListPass::setNodeReservePerTexel(unsigned int nodes)
+{
+    nodeReservePerTexel() = nodes;
+}
+
+unsigned int TriangleListPass::getNodeReservePerTexel()
+{
+    return nodeReservePerTexel();
+}
+
+bool TriangleListPass::overflowed(std::size_t& nodes, std::size_t& triangles) const
+{
+    if (!_readback->known) return false;
+    nodes = _readback->nodes;
+    triangles = _readback->triangles;
+    return nodes > _nodeCapacity || triangles > _triangleCapacity;
 }
 
 std::size_t TriangleListPass::getBufferSize() const

@@ -5,6 +5,7 @@
 #include "Classes.h"
 #include "GLTestSupport.h"
 #include "Meshes.h"
+#include "NotifyCapture.h"
 
 #include <osgShadowSilhouette/TriangleListPass>
 
@@ -394,4 +395,40 @@ TEST(DepthPrepass, LeavesOutWhatItCannotDrawAsTheEyePassDoes)
     osg::ref_ptr<osg::Image> with = capture(r, SilhouetteShadowTechnique::DEPTH_PREPASS_ON);
     EXPECT_TRUE(r.technique->getStatistics().depthPrepass);
     EXPECT_EQ(differingPixels(*without, *with), 0);
+}
+
+// Lists that overflow their buffer leave the slot's silhouette pixels to the shadow map; the
+// counts come back without stalling a frame or two later, and the technique warns and
+// rebuilds the lists with room for them: from then on the picture is that of lists with
+// room to spare. A reserve of 0 nodes per texel leaves room for 4 per triangle only, which
+// the default scene's ground (two triangles over most of the grid) overflows.
+TEST(HybridMethods, OverflowingListsAreReadBackAndRebuiltLarger)
+{
+    using osgShadowSilhouette::TriangleListPass;
+    ossref::Mask control;
+    {
+        ShadowedRender r("default", "hybrid", 512, 512, 384);
+        ASSERT_TRUE(r.valid());
+        r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+        control = r.mask();
+    }
+    osstest::NotifyCapture notes;
+    const unsigned int reserve = TriangleListPass::getNodeReservePerTexel();
+    TriangleListPass::setNodeReservePerTexel(0);
+    ShadowedRender r("default", "hybrid", 512, 512, 384);
+    ASSERT_TRUE(r.valid());
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    const ossref::Mask overflowed = r.mask(0, 1); // built in frame 1, drawn again in frame 2
+    TriangleListPass::setNodeReservePerTexel(reserve);
+    EXPECT_FALSE(notes.warned("triangle lists of shadow slot 0 needed")) << "the counts cannot be back yet";
+    const ossref::Comparison degraded = ossref::compareMasks(overflowed, control);
+    ASSERT_TRUE(degraded.valid) << degraded.error;
+    EXPECT_GT(degraded.wrongPixels, 0) << "the overflowed lists should have left pixels to the shadow map";
+
+    const ossref::Mask grown = r.mask(0, 3);
+    EXPECT_TRUE(notes.warned("triangle lists of shadow slot 0 needed")) << notes.warnings();
+    EXPECT_TRUE(notes.warned("the lists are rebuilt larger")) << notes.warnings();
+    const ossref::Comparison same = ossref::compareMasks(grown, control);
+    ASSERT_TRUE(same.valid) << same.error;
+    EXPECT_EQ(same.wrongPixels, 0) << "the rebuilt lists should give the picture of lists with room to spare";
 }
