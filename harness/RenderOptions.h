@@ -44,6 +44,7 @@ struct RenderOptions
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
+    bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::setEmptyFaceSkipping())
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off
     float shadowRayOffset = -1.0f;     ///< --shadow-ray-offset F (negative: the technique's default)

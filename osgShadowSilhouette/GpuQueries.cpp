@@ -320,4 +320,145 @@ void BlockerQueries::releaseGLObjects(osg::State* state) const
     for (const auto& box : _boxes) box->releaseGLObjects(state);
 }
 
+// ---------------------------------------------------------------------------------------
+// DrawnSamples
+
+namespace {
+
+class SamplesCallback : public osg::Camera::DrawCallback
+{
+public:
+    SamplesCallback(DrawnSamples* samples, bool begin) : _samples(samples), _begin(begin) {}
+    void operator()(osg::RenderInfo& info) const override
+    {
+        osg::ref_ptr<DrawnSamples> samples;
+        if (!_samples.lock(samples)) return;
+        if (_begin)
+            samples->begin(info);
+        else
+            samples->end(info);
+    }
+
+private:
+    osg::observer_ptr<DrawnSamples> _samples; // the pass owns both
+    bool _begin;
+};
+
+class SamplesPollDrawable : public osg::Drawable
+{
+public:
+    explicit SamplesPollDrawable(DrawnSamples* samples) : _samples(samples)
+    {
+        setUseDisplayList(false);
+        setCullingActive(false);
+        setDataVariance(osg::Object::DYNAMIC);
+    }
+    SamplesPollDrawable(const SamplesPollDrawable& d, const osg::CopyOp& op) : osg::Drawable(d, op), _samples(d._samples) {}
+    osg::Object* cloneType() const override { return new SamplesPollDrawable(nullptr); }
+    osg::Object* clone(const osg::CopyOp& op) const override { return new SamplesPollDrawable(*this, op); }
+    const char* libraryName() const override { return "osgShadowSilhouette"; }
+    const char* className() const override { return "DrawnSamplesPollDrawable"; }
+    void drawImplementation(osg::RenderInfo& info) const override
+    {
+        osg::ref_ptr<DrawnSamples> samples;
+        if (_samples.lock(samples)) samples->poll(info);
+    }
+    osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(); } // see CallDrawable
+
+private:
+    osg::observer_ptr<DrawnSamples> _samples;
+};
+
+} // namespace
+
+DrawnSamples::DrawnSamples()
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->setName("osgShadowSilhouette drawn-samples poll");
+    geode->setCullingActive(false);
+    geode->addDrawable(new SamplesPollDrawable(this));
+    _pollNode = geode;
+}
+
+DrawnSamples::~DrawnSamples() = default;
+
+osg::ref_ptr<osg::Camera::DrawCallback> DrawnSamples::createBegin()
+{
+    return new SamplesCallback(this, true);
+}
+
+osg::ref_ptr<osg::Camera::DrawCallback> DrawnSamples::createEnd()
+{
+    return new SamplesCallback(this, false);
+}
+
+void DrawnSamples::begin(osg::RenderInfo& info)
+{
+    const unsigned int build = ++_drawn;
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    PerContext& c = _contexts[info.getContextID()];
+    if (c.unsupported || !_enabled) return;
+    if (c.ids[0] == 0)
+    {
+        if (!queriesSupported(ext))
+        {
+            c.unsupported = true;
+            return;
+        }
+        ext->glGenQueries(RING, c.ids);
+    }
+    // The slot after the newest pending query; full ring: this build stays unknown.
+    unsigned int slot = c.next;
+    while (c.builds[slot] != 0)
+    {
+        slot = (slot + 1) % RING;
+        if (slot == c.next) return;
+    }
+    ext->glBeginQuery(GL_ANY_SAMPLES_PASSED, c.ids[slot]);
+    c.builds[slot] = build;
+    c.active = true;
+}
+
+void DrawnSamples::end(osg::RenderInfo& info)
+{
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    PerContext& c = _contexts[info.getContextID()];
+    if (!c.active) return;
+    ext->glEndQuery(GL_ANY_SAMPLES_PASSED);
+    c.active = false;
+}
+
+void DrawnSamples::poll(osg::RenderInfo& info)
+{
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    auto it = _contexts.find(info.getContextID());
+    if (it == _contexts.end() || it->second.active) return;
+    PerContext& c = it->second;
+    // Oldest first; queries finish in order.
+    while (c.builds[c.next] != 0)
+    {
+        GLuint available = 0;
+        ext->glGetQueryObjectuiv(c.ids[c.next], GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) return;
+        GLuint64 value = 0;
+        ext->glGetQueryObjectui64v(c.ids[c.next], GL_QUERY_RESULT, &value);
+        _lastSamples = static_cast<long long>(value);
+        _counted = c.builds[c.next];
+        c.builds[c.next] = 0;
+        c.next = (c.next + 1) % RING;
+    }
+}
+
+void DrawnSamples::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    if (state)
+        _contexts.erase(state->getContextID());
+    else
+        _contexts.clear();
+}
+
 } // namespace osgShadowSilhouette

@@ -32,6 +32,12 @@ namespace {
 
 constexpr unsigned int MAX_MAP_SIZE = 16384;
 
+std::atomic<bool>& emptyFaceSkipping()
+{
+    static std::atomic<bool> skip{true};
+    return skip;
+}
+
 enum WarningKey
 {
     WARN_MODE_UNAVAILABLE = 1,
@@ -446,6 +452,16 @@ bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, 
            double(triangles) * PREPASS_PIXELS_PER_TRIANGLE <= double(slots) * viewportPixels;
 }
 
+void SilhouetteShadowTechnique::setEmptyFaceSkipping(bool skip)
+{
+    emptyFaceSkipping() = skip;
+}
+
+bool SilhouetteShadowTechnique::getEmptyFaceSkipping()
+{
+    return emptyFaceSkipping();
+}
+
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_statsMutex);
@@ -621,6 +637,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
         vd.receiverStateSet->releaseGLObjects(state);
         for (const LightPass& pass : vd.passes)
         {
+            if (pass.samples) pass.samples->releaseGLObjects(state);
             if (pass.depthCamera) pass.depthCamera->releaseGLObjects(state);
             if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
             if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
@@ -696,6 +713,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
     vd->passes.resize(slots);
     vd->slotInUse.assign(slots, false);
+    vd->slotSkipped.assign(slots, false);
     return vd.release();
 }
 
@@ -719,6 +737,9 @@ SilhouetteShadowTechnique::LightPass SilhouetteShadowTechnique::createLightPass(
     camera->setReadBuffer(GL_NONE);
     camera->attach(osg::Camera::DEPTH_BUFFER, pass.depthTexture.get());
     camera->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+    pass.samples = new DrawnSamples;
+    camera->setInitialDrawCallback(pass.samples->createBegin());
+    camera->setFinalDrawCallback(pass.samples->createEnd());
     pass.depthCamera = camera;
     return pass;
 }
@@ -835,6 +856,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
+        vd.slotSkipped[slot] = false;
     }
     // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too).
     const bool edgeMasks = frame.mode == HYBRID && _hybridEdgeMask;
@@ -989,6 +1011,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     if (!blockers) pass.blockers = nullptr;
     if (blockers) pass.blockers->update(frame.casterList);
     osg::Node* queries = blockers ? pass.blockers->getNode() : nullptr;
+    pass.samples->setEnabled(!blockers && frustum.faceCore > 0.0); // one sample query at a time; only faces skip
     if (pass.depthCamera->getNumChildren() != (queries ? 1u : 0u) || (queries && pass.depthCamera->getChild(0) != queries))
     {
         pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
@@ -999,6 +1022,15 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
                                                      osg::StateAttribute::ON);
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
+    // A cube face whose newest build (this light, these casters) drew no caster shadows
+    // nothing: the eye pass leaves it out. The counts come back a frame or two late; until
+    // then, and in every frame that rebuilds, the face is evaluated.
+    const bool receiverProgram = frame.mode == SHADOW_MAP || frame.mode == SILHOUETTE_MAP || frame.triangleLists;
+    vd.slotSkipped[slot] = emptyFaceSkipping() && receiverProgram && frustum.faceCore > 0.0 &&
+                           (frame.triangleLists ? pass.listPass && pass.listPass->listedNothing()
+                                                : pass.samples->drewNothing());
+    if (vd.slotSkipped[slot]) ++stats.slotsSkipped;
+    if (pass.samples->getEnabled() && pass.samples->pending()) pass.samples->getPollNode()->accept(cv);
     if (!silhouette) return;
     silhouetteMap = pass.silhouettePass->getNeighbourhoodTexture();
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
@@ -1109,7 +1141,9 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
         pass.listRendered = PassInputs();
     }
-    if (!(pass.listRendered == pass.rendered)) // the lists describe another depth map
+    const bool sameReceivers = pass.listReceivers._min == frame.receivers._min &&
+                               pass.listReceivers._max == frame.receivers._max;
+    if (!(pass.listRendered == pass.rendered) || !sameReceivers) // the lists describe another depth map
     {
         if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.listPass->getCamera()->getCullCallback()))
         {
@@ -1121,9 +1155,10 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         }
         const unsigned int mask = cv.getTraversalMask();
         cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
-        pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL);
+        pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL, frame.receivers);
         cv.setTraversalMask(mask);
         pass.listRendered = pass.rendered;
+        pass.listReceivers = frame.receivers;
     }
     // The counts of a finished build come back through the eye pass of a later frame.
     if (pass.listPass->countPending()) pass.listPass->getPollNode()->accept(cv);
@@ -1415,6 +1450,7 @@ void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPas
     pass.depthCamera->setProjectionMatrix(pass.frustum.projection);
     const unsigned int mask = cv.getTraversalMask();
     cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
+    pass.samples->culled(); // one more build to count (or the blocker queries alone: not empty)
     pass.depthCamera->accept(cv);
     cv.setTraversalMask(mask);
 }
@@ -1464,6 +1500,13 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
         faces = faces || vd.passes[s].frustum.faceCore > 0.0;
     }
     vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
+    unsigned int skipped = 0;
+    for (unsigned int s = 0; s < vd.slotSkipped.size() && s < 32; ++s)
+        if (vd.slotInUse[s] && vd.slotSkipped[s]) skipped |= 1u << s;
+    if (skipped != 0)
+        vd.receiverStateSet->setDefine(shader::DEFINE_SKIPPED_SLOTS, std::to_string(skipped));
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_SKIPPED_SLOTS);
     if (faces)
         vd.receiverStateSet->setDefine(shader::DEFINE_CUBE_FACES);
     else

@@ -9,6 +9,7 @@
 #include <osgUtil/CullVisitor>
 
 #include <OpenThreads/Mutex>
+#include <cmath>
 #include <OpenThreads/ScopedLock>
 #include <osg/Geode>
 #include <algorithm>
@@ -102,6 +103,41 @@ unsigned int queryLimit(GLenum name)
     return value > 0 ? static_cast<unsigned int>(value) : 0u;
 }
 
+/** The list buffer's storage: `bytes` bytes that GL allocates and the passes fill. The
+ *  host holds zeros only until the first upload (OSG uploads a buffer's data when it creates
+ *  the GL object): releaseHostCopy() frees them, and a context that creates the object again
+ *  gets zeros made anew. A pass's buffer is 30-70 MB, a cube face's lists included, so the
+ *  host need not keep one per slot. */
+class ListStorage : public osg::BufferData
+{
+public:
+    explicit ListStorage(std::size_t bytes = 0) : _bytes(bytes) {}
+    ListStorage(const ListStorage& other, const osg::CopyOp& op) : osg::BufferData(other, op), _bytes(other._bytes) {}
+    osg::Object* cloneType() const override { return new ListStorage(); }
+    osg::Object* clone(const osg::CopyOp& op) const override { return new ListStorage(*this, op); }
+    const char* libraryName() const override { return "osgShadowSilhouette"; }
+    const char* className() const override { return "TriangleListStorage"; }
+
+    const GLvoid* getDataPointer() const override
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+        if (_zeros.size() * sizeof(GLuint) < _bytes) _zeros.assign((_bytes + sizeof(GLuint) - 1) / sizeof(GLuint), 0u);
+        return _zeros.data();
+    }
+    unsigned int getTotalDataSize() const override { return static_cast<unsigned int>(_bytes); }
+
+    void releaseHostCopy()
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+        std::vector<GLuint>().swap(_zeros);
+    }
+
+private:
+    std::size_t _bytes;
+    mutable OpenThreads::Mutex _mutex;
+    mutable std::vector<GLuint> _zeros;
+};
+
 using ClearBufferSubData = void(GL_APIENTRY*)(GLenum, GLenum, GLintptr, GLsizeiptr, GLenum, GLenum, const void*);
 
 /** Empties the lists before the pass: the counters, heads and counts (the first
@@ -129,6 +165,7 @@ public:
         osg::GLBufferObject* gl = buffer->getBufferObject()->getOrCreateGLBufferObject(id);
         if (!ext || !gl || !ext->glBufferSubData) return;
         if (gl->isDirty()) gl->compileBuffer(); // first use: uploads zeros
+        if (auto* storage = dynamic_cast<ListStorage*>(buffer.get())) storage->releaseHostCopy();
         if (!_clear && !_looked)
         {
             _clear = reinterpret_cast<ClearBufferSubData>(osg::getGLExtensionFuncPtr("glClearBufferSubData"));
@@ -162,7 +199,8 @@ private:
 } // namespace
 
 /** The counters of the newest builds on their way back (per context: a small buffer and a
- *  fence), and the last counts read. */
+ *  fence), and the last counts read. Builds are numbered on both sides (cull: culled, draw:
+ *  drawn), and the counts carry the number of the build they describe (counted). */
 struct TriangleListPass::Readback : public osg::Referenced
 {
     using CopyBufferSubData = void(GL_APIENTRY*)(GLenum, GLenum, GLintptr, GLintptr, GLsizeiptr);
@@ -170,17 +208,31 @@ struct TriangleListPass::Readback : public osg::Referenced
     {
         GLuint buffer = 0;
         GLsync fence = nullptr;
+        unsigned int build = 0; ///< the build whose counters the fence guards
     };
     OpenThreads::Mutex mutex;
     std::map<unsigned int, PerContext> contexts;
     std::atomic<bool> pending{false};
     std::atomic<bool> known{false};
     std::atomic<std::size_t> nodes{0}, triangles{0};
+    std::atomic<unsigned int> reached{1};
+    std::atomic<unsigned int> culled{0}, drawn{0}, counted{0};
+    osg::observer_ptr<osg::BufferData> buffer; ///< the list buffer (draw thread)
     CopyBufferSubData copy = nullptr;
     bool looked = false;
 
     /** After a build: the header's copy and a fence. */
     void request(osg::RenderInfo& info, osg::BufferData* data)
+    {
+        const unsigned int build = ++drawn;
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(mutex);
+        buffer = data;
+        copyHeader(info, data, build);
+    }
+
+    /** Copies the header of the buffer, which holds build `build`, unless an older copy is
+     *  still on its way (poll() copies again once it is read). Call with the mutex held. */
+    void copyHeader(osg::RenderInfo& info, osg::BufferData* data, unsigned int build)
     {
         const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
         const unsigned int id = info.getContextID();
@@ -189,7 +241,6 @@ struct TriangleListPass::Readback : public osg::Referenced
             return;
         osg::GLBufferObject* gl = data->getBufferObject()->getOrCreateGLBufferObject(id);
         if (!gl) return;
-        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(mutex);
         if (!looked)
         {
             copy = reinterpret_cast<CopyBufferSubData>(osg::getGLExtensionFuncPtr("glCopyBufferSubData"));
@@ -202,17 +253,18 @@ struct TriangleListPass::Readback : public osg::Referenced
         {
             ext->glGenBuffers(1, &pc.buffer);
             ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
-            ext->glBufferData(GL_COPY_WRITE_BUFFER, 2 * sizeof(GLuint), nullptr, GL_STREAM_READ);
+            ext->glBufferData(GL_COPY_WRITE_BUFFER, 4 * sizeof(GLuint), nullptr, GL_STREAM_READ);
             ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
         }
         ext->glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT); // the shaders' atomics, before the copy
         ext->glBindBuffer(GL_COPY_READ_BUFFER, gl->getGLObjectID());
         ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
         copy(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(gl->getOffset(data->getBufferIndex())), 0,
-             2 * sizeof(GLuint));
+             4 * sizeof(GLuint));
         ext->glBindBuffer(GL_COPY_READ_BUFFER, 0);
         ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
         pc.fence = ext->glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        pc.build = build;
         pending = pc.fence != nullptr;
     }
 
@@ -229,14 +281,20 @@ struct TriangleListPass::Readback : public osg::Referenced
         if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) return;
         ext->glDeleteSync(pc.fence);
         pc.fence = nullptr;
-        GLuint counts[2] = {0, 0};
+        GLuint counts[4] = {0, 0, 0, 0};
         ext->glBindBuffer(GL_COPY_WRITE_BUFFER, pc.buffer);
         ext->glGetBufferSubData(GL_COPY_WRITE_BUFFER, 0, sizeof(counts), counts);
         ext->glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
         nodes = counts[0];
         triangles = counts[1];
+        reached = counts[2];
+        counted = pc.build;
         known = true;
         pending = false;
+        // A build drawn while this copy was on its way: the buffer holds it now (this poll
+        // runs in the eye pass, after the frame's list passes).
+        osg::ref_ptr<osg::BufferData> data;
+        if (pc.build != drawn.load() && buffer.lock(data)) copyHeader(info, data.get(), drawn.load());
     }
 };
 
@@ -323,7 +381,7 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
         std::max(nodes, std::size_t(grid) * grid * nodeReservePerTexel() + std::size_t(_triangleCapacity) * 4),
         MAX_NODES));
     _nodeCapacity += _nodeCapacity % 2; // the triangles start on a 16-byte boundary
-    _buffer = new osg::UIntArray(trianglesOffset() + 12 * std::size_t(_triangleCapacity));
+    _buffer = new ListStorage(sizeof(GLuint) * (trianglesOffset() + 12 * std::size_t(_triangleCapacity)));
     osg::ref_ptr<osg::ShaderStorageBufferObject> sbo = new osg::ShaderStorageBufferObject;
     sbo->setUsage(GL_DYNAMIC_COPY);
     _buffer->setBufferObject(sbo.get());
@@ -357,6 +415,10 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
     ss->addUniform(new osg::Uniform(shader::LIST_GRID_SIZE, osg::Vec2f(grid, grid)));
     ss->addUniform(_perspective.get());
     ss->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, false));
+    _receivers = new osg::Uniform(osg::Uniform::FLOAT_VEC3, shader::LIST_RECEIVERS, 8);
+    _receiverSlack = new osg::Uniform(shader::LIST_RECEIVER_SLACK, 0.0f);
+    ss->addUniform(_receivers.get());
+    ss->addUniform(_receiverSlack.get());
 }
 
 TriangleListPass::~TriangleListPass() = default;
@@ -403,7 +465,13 @@ bool TriangleListPass::getImageReadsAllowed()
 
 bool TriangleListPass::countPending() const
 {
-    return _readback->pending.load();
+    return _readback->pending.load() || _readback->counted.load() != _readback->culled.load();
+}
+
+bool TriangleListPass::listedNothing() const
+{
+    const Readback& r = *_readback;
+    return r.known && r.counted.load() == r.culled.load() && r.nodes == 0 && r.triangles == 0 && r.reached == 0;
 }
 
 void TriangleListPass::setNodeReservePerTexel(unsigned int nodes)
@@ -429,11 +497,23 @@ std::size_t TriangleListPass::getBufferSize() const
     return _buffer->getTotalDataSize();
 }
 
-void TriangleListPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustum, bool perspective)
+void TriangleListPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustum, bool perspective,
+                            const osg::BoundingBoxd& receivers)
 {
     _camera->setViewMatrix(frustum.view);
     _camera->setProjectionMatrix(frustum.projection);
     _perspective->set(perspective);
+    // Without receivers (or with a box that is not finite) every triangle is kept: the corners
+    // lie far beyond every plane.
+    const bool box = receivers.valid() && std::isfinite(receivers.radius());
+    for (unsigned int i = 0; i < 8; ++i)
+    {
+        const osg::Vec3d corner = box ? receivers.corner(i) * frustum.view : osg::Vec3d();
+        const osg::Vec3f everywhere((i & 1) ? 1e30f : -1e30f, (i & 2) ? 1e30f : -1e30f, (i & 4) ? 1e30f : -1e30f);
+        _receivers->setElement(i, box ? osg::Vec3f(corner) : everywhere);
+    }
+    _receiverSlack->set(box ? float(1e-5 * 2.0 * receivers.radius()) : 0.0f);
+    ++_readback->culled;
     _camera->accept(cv);
 }
 

@@ -106,6 +106,7 @@ int main(int argc, char** argv)
     {
         technique->setBlockerCulling(options.blockerCulling);
         technique->setHybridEdgeMask(options.hybridEdgeMask);
+        SilhouetteShadowTechnique::setEmptyFaceSkipping(options.skipEmptyFaces);
         technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
                                    : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF
                                                                    : SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
@@ -157,9 +158,9 @@ int main(int argc, char** argv)
                     s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
                     s.blockersSkipped, s.triangleLists ? 1 : 0, s.listImages ? 1 : 0);
         std::printf("depth_passes_reused=%u silhouette_passes_reused=%u lights_skipped=%u volumes_culled=%u "
-                    "depth_prepass=%d list_block_heads=%d\n",
+                    "depth_prepass=%d list_block_heads=%d slots_skipped=%u\n",
                     s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled,
-                    s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0);
+                    s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0, s.slotsSkipped);
     }
 
     if (!options.classes.empty() && technique)

@@ -9,7 +9,7 @@
 // it writes the class colours of that light (oss_classColor()).
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
-#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS)
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -18,6 +18,11 @@
 #endif
 #ifndef OSS_NUM_SHADOW_SLOTS
 #define OSS_NUM_SHADOW_SLOTS 0
+#endif
+// Bit s: slot s is a cube face with nothing to shadow (its newest build drew no caster), left
+// out: its term is 1 everywhere.
+#ifndef OSS_SKIPPED_SLOTS
+#define OSS_SKIPPED_SLOTS 0
 #endif
 #define OSS_MAX_SCENE_LIGHTS 8
 
@@ -109,40 +114,40 @@ void main()
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
         lightTerm[s] = 1.0;
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 0
+#if OSS_NUM_SHADOW_SLOTS > 0 && !((OSS_SKIPPED_SLOTS >> 0) & 1)
     OSS_ADD_SLOT(0);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 1
+#if OSS_NUM_SHADOW_SLOTS > 1 && !((OSS_SKIPPED_SLOTS >> 1) & 1)
     OSS_ADD_SLOT(1);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 2
+#if OSS_NUM_SHADOW_SLOTS > 2 && !((OSS_SKIPPED_SLOTS >> 2) & 1)
     OSS_ADD_SLOT(2);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 3
+#if OSS_NUM_SHADOW_SLOTS > 3 && !((OSS_SKIPPED_SLOTS >> 3) & 1)
     OSS_ADD_SLOT(3);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 4
+#if OSS_NUM_SHADOW_SLOTS > 4 && !((OSS_SKIPPED_SLOTS >> 4) & 1)
     OSS_ADD_SLOT(4);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 5
+#if OSS_NUM_SHADOW_SLOTS > 5 && !((OSS_SKIPPED_SLOTS >> 5) & 1)
     OSS_ADD_SLOT(5);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 6
+#if OSS_NUM_SHADOW_SLOTS > 6 && !((OSS_SKIPPED_SLOTS >> 6) & 1)
     OSS_ADD_SLOT(6);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 7
+#if OSS_NUM_SHADOW_SLOTS > 7 && !((OSS_SKIPPED_SLOTS >> 7) & 1)
     OSS_ADD_SLOT(7);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 8
+#if OSS_NUM_SHADOW_SLOTS > 8 && !((OSS_SKIPPED_SLOTS >> 8) & 1)
     OSS_ADD_SLOT(8);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 9
+#if OSS_NUM_SHADOW_SLOTS > 9 && !((OSS_SKIPPED_SLOTS >> 9) & 1)
     OSS_ADD_SLOT(9);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 10
+#if OSS_NUM_SHADOW_SLOTS > 10 && !((OSS_SKIPPED_SLOTS >> 10) & 1)
     OSS_ADD_SLOT(10);
 #endif
-#if OSS_NUM_SHADOW_SLOTS > 11
+#if OSS_NUM_SHADOW_SLOTS > 11 && !((OSS_SKIPPED_SLOTS >> 11) & 1)
     OSS_ADD_SLOT(11);
 #endif
 #ifdef OSS_CUBE_FACES

@@ -9,7 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -18,6 +18,9 @@
 #endif
 #ifndef OSS_NUM_SHADOW_SLOTS
 #define OSS_NUM_SHADOW_SLOTS OSS_MAX_SHADOW_SLOTS // the slots in use this frame, when the technique sets it
+#endif
+#ifndef OSS_SKIPPED_SLOTS
+#define OSS_SKIPPED_SLOTS 0 // bit s: a cube face left out, term 1 (oss_receiver.frag.glsl)
 #endif
 #define OSS_MAX_SCENE_LIGHTS 8
 
@@ -82,7 +85,7 @@ float oss_shadowSlotTerm(int slot, vec4 eyePosition)
 #ifdef OSS_CUBE_FACES
     float term = 1.0;
     for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
-        if (oss_slotOwner[s] == slot)
+        if (oss_slotOwner[s] == slot && ((OSS_SKIPPED_SLOTS >> s) & 1) == 0)
             term *= oss_faceGate(s, eyePosition, OSS_MAP_TERM(s, eyePosition));
     return term;
 #else

@@ -7,11 +7,18 @@
 // fragment stage keeps exactly those (conservative rasterization, as in irregular
 // z-buffers). Triangles reaching behind a perspective light's eye plane are not listed.
 //
-// List buffer layout (uints, G the grid size): [0] node count, [1] triangle count, [2, 3]
-// unused; G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity (even) nodes
-// of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
+// List buffer layout (uints, G the grid size): [0] node count, [1] triangle count, [2] 1 when
+// any triangle reached the map, listed or not (the technique keeps the slot in the eye pass
+// then), [3] unused; G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity
+// (even) nodes of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
 // (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for a perspective one
 // (both grow away from the light and are linear in texture-space x, y).
+//
+// A triangle that cannot stand between the light and any receiver (every corner of the
+// receivers' world box lies on the light's side of its plane, or within oss_listReceiverSlack
+// beyond it: a ground plane under the light, for instance) is left out altogether: no
+// shadow ray toward the light from a receiver crosses its plane. Grounds are listed in
+// every texel they cover otherwise, and would lengthen every walk.
 //
 // A closed caster (oss_listFrontOnly) lists only its triangles wound counter-clockwise in
 // the light's view, those facing the light: a shadow ray that meets a closed surface leaves
@@ -28,19 +35,53 @@ uniform uint oss_listTriangleCapacity;
 uniform vec2 oss_listGridSize;
 uniform bool oss_listPerspective; // the light's projection
 uniform bool oss_listFrontOnly;   // a closed caster: counter-clockwise triangles only
+uniform vec3 oss_listReceivers[8];   // the corners of the receivers' world box, in the light's view space
+uniform float oss_listReceiverSlack; // how far beyond a triangle's plane a corner still counts as on it
+
+in vec4 oss_lightViewPosition[];
 
 flat out uint oss_triangle;
 flat out vec2 oss_v0, oss_v1, oss_v2; // texture space
 
+// Whether some corner of the receivers' box lies beyond the plane of the triangle (light
+// view space) from the light: only then can the triangle shadow a receiver.
+bool oss_canShadowReceivers(vec3 v0, vec3 v1, vec3 v2)
+{
+    vec3 n = cross(v1 - v0, v2 - v0);
+    float len = length(n);
+    if (!(len > 0.0))
+        return true; // degenerate: the other tests decide
+    n /= len;
+    // The light's side: the eye of a perspective light, +z (toward the light) for a directional one.
+    float light = oss_listPerspective ? -dot(n, v0) : n.z;
+    if (light == 0.0)
+        return true; // edge-on: the area test decides
+    float side = sign(light);
+    for (int i = 0; i < 8; ++i)
+        if (side * dot(n, oss_listReceivers[i] - v0) < -oss_listReceiverSlack)
+            return true;
+    return false;
+}
+
 void main()
 {
+    vec4 p0 = oss_lightViewPosition[0], p1 = oss_lightViewPosition[1], p2 = oss_lightViewPosition[2];
+    if (p0.w > 0.0 && p1.w > 0.0 && p2.w > 0.0 &&
+        !oss_canShadowReceivers(p0.xyz / p0.w, p1.xyz / p1.w, p2.xyz / p2.w))
+        return; // no receiver behind it
     vec4 c0 = gl_in[0].gl_Position, c1 = gl_in[1].gl_Position, c2 = gl_in[2].gl_Position;
+    if (c0.w <= 0.0 && c1.w <= 0.0 && c2.w <= 0.0)
+        return; // wholly behind a perspective light's eye plane: outside its map
     if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0)
+    {
+        oss_list[2] = 1u; // reaches behind it: not listed, but its depth pass may draw part of it
         return;
+    }
     vec3 t0 = c0.xyz / c0.w * 0.5 + 0.5, t1 = c1.xyz / c1.w * 0.5 + 0.5, t2 = c2.xyz / c2.w * 0.5 + 0.5;
     vec2 lo = min(min(t0.xy, t1.xy), t2.xy), hi = max(max(t0.xy, t1.xy), t2.xy);
     if (any(greaterThan(lo, vec2(1.0))) || any(lessThan(hi, vec2(0.0))))
         return; // outside the map
+    oss_list[2] = 1u; // this frustum has casters (the same value from every invocation: no atomic)
     vec2 e1 = t1.xy - t0.xy, e2 = t2.xy - t0.xy;
     float area = e1.x * e2.y - e1.y * e2.x;
     if (area == 0.0)

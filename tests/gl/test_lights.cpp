@@ -2,9 +2,13 @@
 // against the exact ray-cast reference (MEASURE.md); the light budget and its warning; lights
 // that cannot affect the view skipped. 256x192 images keep the suite fast.
 #include "GLTestSupport.h"
+#include "Meshes.h"
 #include "NotifyCapture.h"
 
+#include <osg/LightSource>
+#include <osg/Material>
 #include <osg/Notify>
+#include <osgShadow/ShadowSettings>
 
 #include <cmath>
 #include <iostream>
@@ -415,3 +419,122 @@ TEST(HybridTriangleLists, EveryCubeFaceHasLists)
         EXPECT_LT(c.wrongPct, hybrid.bound(LightType::POINT)) << "light " << i;
     }
 }
+
+// A point light between two boxes on a ground: of its cube faces, -x and +x see a box and
+// the others (-z at least) see nothing that can shadow a receiver. Once their builds are
+// read back (a frame or two), those faces are left out of the eye pass, and the picture is
+// the same, pixel for pixel, as with every face evaluated. A ground that casts is in every
+// face's depth map, so SHADOW_MAP and SILHOUETTE_MAP keep every face then; HYBRID's lists
+// leave the ground out (no receiver lies below it) and still skip them.
+namespace {
+
+constexpr unsigned int PAIR_RECEIVES = 0x1, PAIR_CASTS = 0x2;
+
+osg::ref_ptr<osg::Geode> pairPart(osg::ref_ptr<osg::Geometry> g, const osg::Vec4& colour, unsigned int mask)
+{
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setColorMode(osg::Material::OFF);
+    m->setAmbient(osg::Material::FRONT_AND_BACK, colour);
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, colour);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(g.get());
+    geode->getOrCreateStateSet()->setAttributeAndModes(m.get());
+    geode->setNodeMask(mask);
+    return geode;
+}
+
+/** The pair scene in r (made from the default scene with the light of pairOptions()). */
+void makePair(ShadowedRender& r, bool groundCasts)
+{
+    osgShadow::ShadowSettings* settings = r.technique->getShadowedScene()->getShadowSettings();
+    settings->setReceivesShadowTraversalMask(PAIR_RECEIVES);
+    settings->setCastsShadowTraversalMask(PAIR_CASTS);
+    osg::Group& content = *r.scene.content;
+    for (unsigned int i = content.getNumChildren(); i-- > 0;)
+        if (!dynamic_cast<osg::LightSource*>(content.getChild(i))) content.removeChild(i);
+    const unsigned int both = PAIR_RECEIVES | PAIR_CASTS;
+    content.addChild(pairPart(osshar::makeGround(0, 0, 24), osg::Vec4(0.75f, 0.75f, 0.72f, 1), groundCasts ? both : PAIR_RECEIVES));
+    for (float x : {-5.0f, 5.0f})
+        content.addChild(pairPart(osshar::makeBox(osg::Vec3(x, 0.0f, 0.5f), osg::Vec3(1, 1, 1)), osg::Vec4(0.3f, 0.6f, 0.3f, 1), both));
+}
+
+osshar::RenderOptions pairOptions()
+{
+    osshar::RenderOptions options;
+    options.scene = "default";
+    options.lights.push_back({false, osg::Vec3d(0.0, 0.0, 3.0)});
+    return options;
+}
+
+long long differingPixels(const osg::Image& a, const osg::Image& b)
+{
+    if (a.s() != b.s() || a.t() != b.t()) return -1;
+    long long n = 0;
+    for (int y = 0; y < a.t(); ++y)
+        for (int x = 0; x < a.s(); ++x)
+            if (a.getColor(x, y) != b.getColor(x, y)) ++n;
+    return n;
+}
+
+struct PairCase
+{
+    const char* mode;
+    bool groundCasts;
+    bool skips; ///< whether the faces without boxes are left out
+};
+
+class EmptyCubeFaces : public ::testing::TestWithParam<PairCase>
+{
+};
+
+} // namespace
+
+TEST_P(EmptyCubeFaces, AreLeftOutAndThePictureStays)
+{
+    const PairCase& c = GetParam();
+    ShadowedRender r(pairOptions(), c.mode, 512, W, H);
+    ASSERT_TRUE(r.valid());
+    makePair(r, c.groundCasts);
+    SilhouetteShadowTechnique::setEmptyFaceSkipping(false);
+    r.renderer->timeFrames(0, 3);
+    osg::ref_ptr<osg::Image> every = r.renderer->renderAndCapture();
+    const SilhouetteShadowTechnique::Statistics all = r.technique->getStatistics();
+    EXPECT_EQ(all.slotsSkipped, 0u);
+    ASSERT_GE(all.shadowPasses, 3u) << "the point light needs cube faces: -x, +x and -z at least";
+
+    SilhouetteShadowTechnique::setEmptyFaceSkipping(true);
+    r.renderer->timeFrames(0, 3);
+    osg::ref_ptr<osg::Image> skipping = r.renderer->renderAndCapture();
+    const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
+    EXPECT_EQ(s.shadowPasses, all.shadowPasses);
+    EXPECT_EQ(s.slotsSkipped, c.skips ? s.shadowPasses - 2 : 0u) << "every face but -x and +x holds no box";
+    EXPECT_EQ(differingPixels(*every, *skipping), 0) << "a face left out shadows nothing";
+    const ModeBound* bound = &MODES[0];
+    for (const ModeBound& m : MODES)
+        if (m.mode == std::string(c.mode)) bound = &m;
+    const ossref::Comparison cmp = compare(r, 0);
+    EXPECT_LT(cmp.wrongPct, bound->bound(LightType::POINT)) << cmp.wrongPixels << " wrong pixels";
+    const ossref::Mask reference = r.reference(0);
+    long long shadowed = 0;
+    for (std::size_t i = 0; i < reference.value.size(); ++i)
+        shadowed += reference.value[i] == 0 && reference.grazing[i] == 0 ? 1 : 0;
+    std::cout << "pair " << c.mode << ": " << s.slotsSkipped << " of " << s.shadowPasses << " faces left out; "
+              << shadowed << " shadowed pixels in the reference, " << cmp.wrongPixels << " wrong\n";
+    EXPECT_GT(shadowed, 10 * cmp.wrongPixels + 200) << "the boxes' shadows are in view, and in the picture";
+
+    // Moving the light rebuilds every face: none is left out until the new builds are back.
+    r.scene.lights[0].source->getLight()->setPosition(osg::Vec4(0.0f, 0.2f, 3.0f, 1.0f));
+    r.renderer->timeFrames(0, 1);
+    EXPECT_EQ(r.technique->getStatistics().slotsSkipped, 0u) << "the frame that rebuilt";
+    r.renderer->timeFrames(0, 3);
+    EXPECT_EQ(r.technique->getStatistics().slotsSkipped, c.skips ? s.shadowPasses - 2 : 0u);
+    SilhouetteShadowTechnique::setEmptyFaceSkipping(true);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, EmptyCubeFaces,
+                         ::testing::Values(PairCase{"shadowmap", false, true}, PairCase{"shadowmap", true, false},
+                                           PairCase{"silhouette", false, true}, PairCase{"silhouette", true, false},
+                                           PairCase{"hybrid", false, true}, PairCase{"hybrid", true, true}),
+                         [](const ::testing::TestParamInfo<PairCase>& info) {
+                             return std::string(info.param.mode) + (info.param.groundCasts ? "_casting_ground" : "");
+                         });
