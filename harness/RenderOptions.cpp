@@ -157,6 +157,11 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         error = "--shadow-ray-offset takes a finite number of at least 0";
         return false;
     }
+    if (a.read("--reference-offset", o.referenceOffset) && !(o.referenceOffset >= 0.0 && std::isfinite(o.referenceOffset)))
+    {
+        error = "--reference-offset takes a finite number of at least 0";
+        return false;
+    }
     if (a.read("--polygon-offset", o.polygonOffsetFactor, o.polygonOffsetUnits) &&
         !(o.polygonOffsetFactor >= 0.0f && o.polygonOffsetUnits >= 0.0f))
     {
@@ -185,7 +190,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--light-dir X Y Z | --light-pos X Y Z [--spot-dir X Y Z] [--spot-cutoff DEG]]...\n"
       << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
-      << "    [--reference ref%d.png] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
+      << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
       << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F] [--skip-empty-faces on|off]\n"
       << "    [--moving-light]\n";

@@ -42,6 +42,7 @@ struct RenderOptions
     std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
+    double referenceOffset = -1.0;    ///< --reference-offset S: the reference's offset scale (negative: ossref's default)
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
     bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::setEmptyFaceSkipping())

@@ -207,7 +207,9 @@ int main(int argc, char** argv)
         }
         if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
         {
-            reference = ossref::computeReferenceMask(*scene.content, refCamera, osshar::referenceLight(scene.lights[i]));
+            reference = ossref::computeReferenceMask(
+                *scene.content, refCamera, osshar::referenceLight(scene.lights[i]), ~0u, ~0u,
+                options.referenceOffset >= 0.0 ? options.referenceOffset : ossref::DEFAULT_OFFSET_SCALE);
             if (!options.reference.empty()) ossref::writeMask(reference, perLightName(options.reference, i));
         }
         if (mask.empty() || reference.empty()) continue;

@@ -220,7 +220,8 @@ vec4 oss_listPoint(int s, vec4 eyePosition)
 
 // Where the shadow ray of an eye-space position starts: off the surface along its geometric
 // normal, turned toward the camera, by a scale-aware offset (ShaderConstants: the radius of
-// the shadowed scene's bound times 1e-5, plus 1e-6 per unit of distance from its centre).
+// the shadowed scene's bound times ShadowRayOffset (default 1e-6), plus 1e-6 per unit of
+// distance from its centre).
 // It is what a ray tracer's shadow ray does (and the exact reference's): points that close
 // to a shadow boundary take the answer of the offset point, not of a depth epsilon along the
 // light (which, for a directional light, leaves the ray's line where it was). Derivatives:

@@ -60,5 +60,5 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
         ADD_ENUM_VALUE(DEPTH_PREPASS_OFF);
     END_ENUM_SERIALIZER();
 
-    OSS_ADD_PROPERTY(float, ShadowRayOffset, 1e-5f);
+    OSS_ADD_PROPERTY(float, ShadowRayOffset, 1e-6f);
 }

@@ -552,8 +552,50 @@ TEST(ReferenceTracer, OneBvhManyLights)
     EXPECT_EQ(tracer.triangleCount(), 4u);
     EXPECT_EQ(tracer.render(topCamera(), directional({1, 0, 1})).count(0), 400);
     EXPECT_EQ(tracer.render(topCamera(), pointLight({0, 0, 8}), 1).count(0), 1200);
-    // eps = 1e-5 R + 1e-6 |p - C| with R = half the diagonal of [-10,10]^2 x [0,4], C = (0,0,2).
-    EXPECT_NEAR(tracer.epsilonAt(osg::Vec3d(0, 0, 2)), 1e-5 * std::sqrt(204.0), 1e-12);
+    // eps = 1e-6 R + 1e-6 |p - C| with R = half the diagonal of [-10,10]^2 x [0,4], C = (0,0,2).
+    EXPECT_NEAR(tracer.epsilonAt(osg::Vec3d(0, 0, 2)), 1e-6 * std::sqrt(204.0), 1e-12);
+    EXPECT_NEAR(tracer.epsilonAt(osg::Vec3d(3, 4, 2)), 1e-6 * std::sqrt(204.0) + 5e-6, 1e-12);
+}
+
+// The reference answers for the offset point hit + eps N. A shadow boundary that passes
+// 5e-5 units from a pixel's ground point, inside the shadow, must not fall between the two.
+// Light toward (1, 0, 1); an occluder quad at z = 2 over x in [a, a + 4], y in [-2, 2]:
+// ground point (x, y, 0) is shadowed for x in [a - 2, a + 2], and a point at height e for
+// x in [a - 2 + e, a + 2 - e]. Pixel column 150 sees x = 0.05; with a - 2 = 0.05 - 5e-5 its
+// centre lies 5e-5 inside the shadow: shadowed at offsets below 5e-5 (the default's,
+// 1e-6 R + 1e-6 |p - C| ~ 1.6e-5 here), lit from the earlier 1e-5 R (1.4e-4).
+TEST(ReferenceTracer, ShadowBoundaryCloserThanTheOldOffset)
+{
+    const double a = 2.05 - 5e-5;
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+    root->addChild(geode(quad(a, a + 4, -2, 2, 2).get()));
+    ossref::Tracer tracer(*root);
+    const Light light = directional({1, 0, 1});
+    ASSERT_LT(tracer.epsilonAt(osg::Vec3d(0.05, 0.05, 0)), 2e-5);
+    const Mask fine = tracer.render(topCamera(), light);
+    EXPECT_EQ(fine.atGL(150, 150), ossref::MASK_NO_LIGHT);
+    EXPECT_EQ(fine.atGL(149, 150), ossref::MASK_LIT); // x = -0.05: 0.1 outside
+    EXPECT_EQ(fine.atGL(151, 150), ossref::MASK_NO_LIGHT);
+    tracer.setOffsetScale(1e-5);
+    EXPECT_DOUBLE_EQ(tracer.getOffsetScale(), 1e-5);
+    EXPECT_EQ(tracer.render(topCamera(), light).atGL(150, 150), ossref::MASK_LIT);
+}
+
+// Embree's hit distance is a float: from a camera 1000 units away it is good to about
+// 1000 x 6e-8 = 6e-5 units, four times the shadow ray's offset over this ground (1.4e-5).
+// The hit is moved onto its triangle's plane in double precision, so a lit ground with
+// nothing above it is lit at every pixel (without that, points below the plane shadow
+// themselves).
+TEST(ReferenceTracer, FarCameraDoesNotShadowALitGround)
+{
+    const Mask m = ossref::computeReferenceMask(*groundScene(Occluder::None), topCamera(), directional({1, 0.3, 0.2}));
+    EXPECT_EQ(m.count(ossref::MASK_LIT), kGround);
+    Camera farther = topCamera();
+    farther.eye = osg::Vec3d(0.0, 0.0, 20000.0);
+    farther.fovyDeg = osg::RadiansToDegrees(2.0 * std::atan(0.015 / 20.0));
+    const Mask m2 = ossref::computeReferenceMask(*groundScene(Occluder::None), farther, directional({1, 0.3, 0.2}));
+    EXPECT_EQ(m2.count(ossref::MASK_LIT), kGround);
 }
 
 // ---------------------------------------------------------------------------------------

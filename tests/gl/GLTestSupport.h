@@ -67,12 +67,13 @@ struct ShadowedRender
         return ossref::maskFromImage(*image);
     }
 
-    /** The exact reference mask of light `index` for the same view. */
-    ossref::Mask reference(unsigned int index = 0) const
+    /** The exact reference mask of light `index` for the same view (its shadow rays offset
+     *  by `offsetScale` of the scene's radius: ossref::computeReferenceMask). */
+    ossref::Mask reference(unsigned int index = 0, double offsetScale = ossref::DEFAULT_OFFSET_SCALE) const
     {
         return ossref::computeReferenceMask(*scene.content,
                                             osshar::referenceCamera(scene.view, renderer->width(), renderer->height()),
-                                            osshar::referenceLight(scene.lights.at(index)));
+                                            osshar::referenceLight(scene.lights.at(index)), ~0u, ~0u, offsetScale);
     }
 };
 

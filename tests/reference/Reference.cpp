@@ -286,7 +286,10 @@ struct Tracer::Impl
 
     void build(const TriangleSoup& soup);
     RTCScene makeScene(const TriangleSoup& soup, bool castersOnly);
-    double epsilon(const osg::Vec3d& local) const { return 1e-5 * radius + 1e-6 * local.length(); }
+    std::vector<osg::Vec3d> corners;  // per primary triangle, its three vertices (recentred, double)
+    double offsetScale = DEFAULT_OFFSET_SCALE;
+
+    double epsilon(const osg::Vec3d& local) const { return offsetScale * radius + 1e-6 * local.length(); }
     PixelResult shade(const RayFrame& rays, const LightFrame& light, int x, int y) const;
     bool occluded(const osg::Vec3d& origin, const osg::Vec3d& direction, double tfar) const;
     void renderRows(const RayFrame& rays, const LightFrame& light, Mask& mask, unsigned first, unsigned step) const;
@@ -310,12 +313,14 @@ void Tracer::Impl::build(const TriangleSoup& soup)
     shadow = allCast ? primary : makeScene(soup, true);
 
     normals.reserve(soup.size());
+    corners.reserve(3 * soup.size());
     for (size_t t = 0; t < soup.size(); ++t)
     {
         const osg::Vec3d* v = &soup.vertices[3 * t];
         osg::Vec3d n = (v[1] - v[0]) ^ (v[2] - v[0]);
         n.normalize();
         normals.push_back(n);
+        for (int i = 0; i < 3; ++i) corners.push_back(v[i] - centre);
     }
 }
 
@@ -403,8 +408,18 @@ PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, i
     rtcIntersect1(primary, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.primID >= normals.size()) return result;
 
-    const osg::Vec3d p = org + dir * double(rh.ray.tfar);
+    // Embree's hit distance is a float, good to a few units in the last place of the
+    // distance from the camera: the hit is moved onto the plane of its triangle in double
+    // precision, so that the shadow ray's offset below need not cover the camera distance.
     osg::Vec3d n = normals[rh.hit.primID];
+    double t = double(rh.ray.tfar);
+    const double nd = n * dir;
+    if (std::fabs(nd) > 1e-12)
+    {
+        const double exact = ((corners[3 * size_t(rh.hit.primID)] - org) * n) / nd;
+        if (std::isfinite(exact) && exact > 0.0) t = exact;
+    }
+    const osg::Vec3d p = org + dir * t;
     if (n * dir > 0.0) n = -n;
     result.value = MASK_NO_LIGHT;
     if (!light.valid) return result;
@@ -455,6 +470,10 @@ size_t Tracer::triangleCount() const { return _impl->normals.size(); }
 
 double Tracer::epsilonAt(const osg::Vec3d& p) const { return _impl->epsilon(p - _impl->centre); }
 
+void Tracer::setOffsetScale(double scale) { _impl->offsetScale = scale; }
+
+double Tracer::getOffsetScale() const { return _impl->offsetScale; }
+
 Mask Tracer::render(const Camera& camera, const Light& light, unsigned int threads) const
 {
     if (camera.width <= 0 || camera.height <= 0) return Mask();
@@ -473,9 +492,11 @@ Mask Tracer::render(const Camera& camera, const Light& light, unsigned int threa
 }
 
 Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light, unsigned int castsMask,
-                          unsigned int traversalMask)
+                          unsigned int traversalMask, double offsetScale)
 {
-    return Tracer(scene, castsMask, traversalMask).render(camera, light);
+    Tracer tracer(scene, castsMask, traversalMask);
+    tracer.setOffsetScale(offsetScale);
+    return tracer.render(camera, light);
 }
 
 bool cameraFromOsg(const osg::Camera& camera, Camera& out)

@@ -144,6 +144,11 @@ public:
     /** Shadow-ray offset used at world point p (see computeReferenceMask). */
     double epsilonAt(const osg::Vec3d& p) const;
 
+    /** The offset's share of the scene's radius (DEFAULT_OFFSET_SCALE); for convergence
+     *  studies (renderer --reference-offset). Not thread-safe against render(). */
+    void setOffsetScale(double scale);
+    double getOffsetScale() const;
+
     size_t triangleCount() const;
 
 private:
@@ -151,19 +156,26 @@ private:
     std::unique_ptr<Impl> _impl;
 };
 
+/** The shadow ray's offset as a share of the scene's radius (computeReferenceMask). */
+constexpr double DEFAULT_OFFSET_SCALE = 1e-6;
+
 /** The exact reference mask. For each pixel one primary ray (tnear 0, no far limit);
- *  no hit -> 128. At the hit the geometric normal of the triangle, flipped to face the
- *  camera, is N; L is the normalised direction to the light. N.L <= 0 -> 0; a SPOT light
- *  whose cone excludes the point -> 0; otherwise a shadow ray toward the light (to
- *  infinity for DIRECTIONAL, up to the light position for POINT/SPOT) decides 0 if it is
- *  occluded by a casting triangle and 255 if not. The shadow ray starts at hit + eps*N
- *  and stops eps before the light, with eps = 1e-5 * R + 1e-6 * |hit - C| (R, C: radius
- *  and centre of the scene's bounding sphere): the first term covers the BVH's float
- *  vertex precision relative to the scene size, the second the float precision of points
- *  far from the centre. grazing = 0 < N.L < 0.05, regardless of shadow or cone.
- *  Rows are split over all cores. */
+ *  no hit -> 128. The hit is moved onto its triangle's plane in double precision (Embree's
+ *  hit distance is a float). At the hit the geometric normal of the triangle, flipped to
+ *  face the camera, is N; L is the normalised direction to the light. N.L <= 0 -> 0; a
+ *  SPOT light whose cone excludes the point -> 0; otherwise a shadow ray toward the light
+ *  (to infinity for DIRECTIONAL, up to the light position for POINT/SPOT) decides 0 if it
+ *  is occluded by a casting triangle and 255 if not. The shadow ray starts at hit + eps*N
+ *  and stops eps before the light, with eps = s * R + 1e-6 * |hit - C| (R, C: radius and
+ *  centre of the scene's bounding box; s = `offsetScale`, DEFAULT_OFFSET_SCALE): the first
+ *  term covers the BVH's float vertices (rounded by at most 6e-8 R: s = 1e-6 is sixteen
+ *  times that), the second the float precision of points far from the centre. The answer
+ *  is the offset point's: a shadow boundary closer than eps to the hit may fall between
+ *  the two (docs/reference.md measures how the masks converge as s shrinks).
+ *  grazing = 0 < N.L < 0.05, regardless of shadow or cone. Rows are split over all cores. */
 Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light,
-                          unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u);
+                          unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u,
+                          double offsetScale = DEFAULT_OFFSET_SCALE);
 
 /** Error of a mask against the reference (MEASURE.md). */
 struct Comparison
