@@ -681,10 +681,13 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, slots);
     osg::ref_ptr<osg::Uniform> silhouetteSamplers =
         new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, slots);
+    const unsigned int paired = slotCapacity(true);
     for (unsigned int slot = 0; slot < slots; ++slot)
     {
         samplers->setElement(slot, int(_baseTextureUnit + slot));
-        silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot)));
+        // Only the paired modes declare silhouette samplers, OSS_MAX_SHADOW_SLOTS = `paired` of
+        // them: the elements after those are never read (a valid unit all the same).
+        silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
         ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), osg::StateAttribute::ON);
     }
@@ -791,7 +794,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     for (std::size_t i = 0; i < lights.size(); ++i)
         if (slots[i] >= 0)
             firstFaceSlot[i] = nextFreeSlot, frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
-                                        static_cast<unsigned int>(vd.passes.size()));
+                                                                         slotCapacity(pairedSlots(frame.mode)));
     frame.triangleLists = frame.mode == HYBRID && useTriangleLists(cv);
     const unsigned int blocks = cv.getState() ? TriangleListPass::fragmentStorageBlocks(cv.getState()->getContextID()) : 0;
     const unsigned int listLimit = blocks > 0 ? std::min(listSlots(), blocks) : listSlots();
@@ -845,22 +848,27 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::DEPTH);
 
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
-    const unsigned int capacity = slotCapacity();
+    const bool paired = pairedSlots(frame.mode);
+    const unsigned int capacity = slotCapacity(paired);
+    vd.receiverStateSet->setDefine(shader::DEFINE_MAX_SHADOW_SLOTS, std::to_string(capacity));
     // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
     std::vector<osg::Texture2D*> silhouetteMaps(
         capacity, silhouette ? _defaultNeighbourhoodTexture.get() : _defaultSilhouetteTexture.get());
-    for (unsigned int slot = 0; slot < capacity; ++slot)
+    for (unsigned int slot = 0; slot < vd.passes.size(); ++slot)
     {
-        vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                         osg::StateAttribute::ON);
+        // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
+        if (slot < capacity)
+            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
+                                                             osg::StateAttribute::ON);
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
         vd.slotSkipped[slot] = false;
     }
-    // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too).
+    // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too); in
+    // SHADOW_MAP their units hold the depth maps bound above.
     const bool edgeMasks = frame.mode == HYBRID && _hybridEdgeMask;
-    bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
+    if (paired) bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
     if (edgeMasks)
         vd.receiverStateSet->setDefine(shader::DEFINE_HYBRID_EDGES);
     else
@@ -882,18 +890,20 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     recordStatistics(stats);
 }
 
-unsigned int SilhouetteShadowTechnique::slotCapacity() const
+unsigned int SilhouetteShadowTechnique::slotCapacity(bool paired) const
 {
-    // Two texture units per slot (depth map, silhouette map) from BaseTextureUnit, within the
-    // 32 image units of a fragment stage; never fewer than the light budget.
-    const unsigned int units = _baseTextureUnit < 32 ? (32 - _baseTextureUnit) / 2 : 0;
-    return std::max(_maxShadowLights, std::min<unsigned int>(shader::MAX_SHADOW_SLOTS, units));
+    // One texture unit per slot (depth map), or two (and a silhouette map), from
+    // BaseTextureUnit, within the 32 image units of a fragment stage; never fewer than the
+    // light budget.
+    const unsigned int units = _baseTextureUnit < 32 ? 32 - _baseTextureUnit : 0;
+    return paired ? std::max(_maxShadowLights, std::min<unsigned int>(shader::MAX_PAIRED_SLOTS, units / 2))
+                  : std::max(_maxShadowLights, std::min<unsigned int>(shader::MAX_SHADOW_SLOTS, units));
 }
 
 unsigned int SilhouetteShadowTechnique::listSlots() const
 {
     // Every slot can have lists: they take no texture unit, one shader storage block each.
-    return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity());
+    return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity(true));
 }
 
 bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
@@ -1350,7 +1360,7 @@ void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
 void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
 {
     osg::StateSet& ss = *vd.receiverStateSet;
-    for (unsigned int slot = 0; slot < slotCapacity(); ++slot)
+    for (unsigned int slot = 0; slot < slotCapacity(true); ++slot)
     {
         if (maps.empty())
             ss.removeTextureAttribute(silhouetteUnit(slot), osg::StateAttribute::TEXTURE);

@@ -150,6 +150,43 @@ void main()
 #if OSS_NUM_SHADOW_SLOTS > 11 && !((OSS_SKIPPED_SLOTS >> 11) & 1)
     OSS_ADD_SLOT(11);
 #endif
+    // Slots 12-23: SHADOW_MAP only (one texture unit per slot; shader::MAX_SHADOW_SLOTS).
+#if OSS_NUM_SHADOW_SLOTS > 12 && !((OSS_SKIPPED_SLOTS >> 12) & 1)
+    OSS_ADD_SLOT(12);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 13 && !((OSS_SKIPPED_SLOTS >> 13) & 1)
+    OSS_ADD_SLOT(13);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 14 && !((OSS_SKIPPED_SLOTS >> 14) & 1)
+    OSS_ADD_SLOT(14);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 15 && !((OSS_SKIPPED_SLOTS >> 15) & 1)
+    OSS_ADD_SLOT(15);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 16 && !((OSS_SKIPPED_SLOTS >> 16) & 1)
+    OSS_ADD_SLOT(16);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 17 && !((OSS_SKIPPED_SLOTS >> 17) & 1)
+    OSS_ADD_SLOT(17);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 18 && !((OSS_SKIPPED_SLOTS >> 18) & 1)
+    OSS_ADD_SLOT(18);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 19 && !((OSS_SKIPPED_SLOTS >> 19) & 1)
+    OSS_ADD_SLOT(19);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 20 && !((OSS_SKIPPED_SLOTS >> 20) & 1)
+    OSS_ADD_SLOT(20);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 21 && !((OSS_SKIPPED_SLOTS >> 21) & 1)
+    OSS_ADD_SLOT(21);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 22 && !((OSS_SKIPPED_SLOTS >> 22) & 1)
+    OSS_ADD_SLOT(22);
+#endif
+#if OSS_NUM_SHADOW_SLOTS > 23 && !((OSS_SKIPPED_SLOTS >> 23) & 1)
+    OSS_ADD_SLOT(23);
+#endif
 #ifdef OSS_CUBE_FACES
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
         color += lightTerm[s] * oss_shadowedColor[s];
