@@ -44,7 +44,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(ExactCase{"default", "volume", 1024, 0.01}, ExactCase{"spheres", "volume", 1024, 0.01},
                       ExactCase{"poles", "volume", 1024, 0.01}, ExactCase{"default", "hybrid", 256, 0.01},
                       ExactCase{"default", "hybrid", 1024, 0.01}, ExactCase{"spheres", "hybrid", 512, 0.01},
-                      ExactCase{"poles", "hybrid", 512, 0.01}),
+                      ExactCase{"poles", "hybrid", 512, 0.01},
+                      // The benchmark scenes (docs/reference.md: SHADOW_VOLUME 20, 16, 1, 1 and 0
+                      // wrong pixels of about 500,000; HYBRID at 256 11, 10 and 0).
+                      ExactCase{"cubes", "volume", 1024, 0.01}, ExactCase{"tree", "volume", 1024, 0.01},
+                      ExactCase{"bunny", "volume", 1024, 0.01}, ExactCase{"dueling", "volume", 1024, 0.01},
+                      ExactCase{"grazing", "volume", 1024, 0.01}, ExactCase{"cubes", "hybrid", 256, 0.01},
+                      ExactCase{"tree", "hybrid", 256, 0.01}, ExactCase{"bunny", "hybrid", 256, 0.01}),
     [](const ::testing::TestParamInfo<ExactCase>& info) {
         return std::string(info.param.scene) + "_" + info.param.mode + "_" + std::to_string(info.param.mapSize);
     });
