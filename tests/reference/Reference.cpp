@@ -286,7 +286,7 @@ struct Tracer::Impl
 
     void build(const TriangleSoup& soup);
     RTCScene makeScene(const TriangleSoup& soup, bool castersOnly);
-    std::vector<osg::Vec3d> corners;  // per primary triangle, its three vertices (recentred, double)
+    std::vector<osg::Vec3d> origins;  // per primary triangle, its first vertex (recentred): a point of its plane
     double offsetScale = DEFAULT_OFFSET_SCALE;
 
     double epsilon(const osg::Vec3d& local) const { return offsetScale * radius + 1e-6 * local.length(); }
@@ -313,14 +313,14 @@ void Tracer::Impl::build(const TriangleSoup& soup)
     shadow = allCast ? primary : makeScene(soup, true);
 
     normals.reserve(soup.size());
-    corners.reserve(3 * soup.size());
+    origins.reserve(soup.size());
     for (size_t t = 0; t < soup.size(); ++t)
     {
         const osg::Vec3d* v = &soup.vertices[3 * t];
         osg::Vec3d n = (v[1] - v[0]) ^ (v[2] - v[0]);
         n.normalize();
         normals.push_back(n);
-        for (int i = 0; i < 3; ++i) corners.push_back(v[i] - centre);
+        origins.push_back(v[0] - centre);
     }
 }
 
@@ -416,7 +416,7 @@ PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, i
     const double nd = n * dir;
     if (std::fabs(nd) > 1e-12)
     {
-        const double exact = ((corners[3 * size_t(rh.hit.primID)] - org) * n) / nd;
+        const double exact = ((origins[rh.hit.primID] - org) * n) / nd;
         if (std::isfinite(exact) && exact > 0.0) t = exact;
     }
     const osg::Vec3d p = org + dir * t;
