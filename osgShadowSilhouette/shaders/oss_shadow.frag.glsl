@@ -302,24 +302,40 @@ vec4 oss_classColor(bool silhouette, bool lit)
 vec2 oss_silhouetteClass(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 
-// The class of slot `slot` at an eye-space position: x the shadow term (1 lit), y 1 where the
-// mode treats the pixel as a silhouette pixel. SHADOW_MAP marks the pixels whose 2x2 PCF
+// The class of shadow slot s at an eye-space position: x the shadow term (1 lit), y 1 where
+// the mode treats the pixel as a silhouette pixel. SHADOW_MAP marks the pixels whose 2x2 PCF
 // lies strictly between 0 and 1 (those HYBRID would resolve with volumes).
+#ifdef OSS_SILHOUETTE_MAP
+#define OSS_SLOT_CLASS(s, p) oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#elif defined(OSS_TRIANGLE_LISTS)
+vec2 oss_listClass(int s, vec4 eyePosition)
+{
+    float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
+    return vec2(step(0.5, oss_listTerm(s, p, eyePosition, true)), oss_listResolves(s, p, eyePosition) ? 1.0 : 0.0);
+}
+#define OSS_SLOT_CLASS(s, p) oss_listClass(s, p)
+#else
+vec2 oss_pcfClass(float p) { return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0); }
+#define OSS_SLOT_CLASS(s, p) oss_pcfClass(oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p))
+#endif
+
+// The class of the light of shadow slot `slot`: its own slot's, or, for a point light with
+// cube faces, that of the face whose own directions hold the point (every face's class is
+// computed, in uniform control flow, and the face gate picks one).
 vec2 oss_shadowSlotClass(int slot, vec4 eyePosition)
 {
+    vec2 result = vec2(1.0, 0.0);
+#ifdef OSS_CUBE_FACES
+    for (int s = 0; s < OSS_NUM_SHADOW_SLOTS; ++s)
+        if (oss_slotOwner[s] == slot)
+        {
+            vec2 c = OSS_SLOT_CLASS(s, eyePosition);
+            result = oss_faceGate(s, eyePosition, 0.0) == 0.0 ? c : result;
+        }
+#else
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
         if (s == slot)
-        {
-#ifdef OSS_SILHOUETTE_MAP
-            return oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
-#else
-            float p = oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], eyePosition);
-#ifdef OSS_TRIANGLE_LISTS
-            return vec2(step(0.5, oss_listTerm(s, p, eyePosition, true)), oss_listResolves(s, p, eyePosition) ? 1.0 : 0.0);
-#else
-            return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0);
+            result = OSS_SLOT_CLASS(s, eyePosition);
 #endif
-#endif
-        }
-    return vec2(1.0, 0.0);
+    return result;
 }

@@ -76,6 +76,31 @@ TEST_P(ClassesView, AgreesWithTheShadowMask)
 
 INSTANTIATE_TEST_SUITE_P(Modes, ClassesView, ::testing::Values("shadowmap", "silhouette", "hybrid", "volume"));
 
+// A point light amid its casters ("ring": cube faces all around) in the map modes: each pixel's
+// class is that of the face whose own directions hold it, so the view agrees with the mask
+// everywhere, not only in the first face's directions.
+class ClassesViewOfCubeFaces : public ::testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(ClassesViewOfCubeFaces, AgreesWithTheShadowMask)
+{
+    osshar::RenderOptions options;
+    options.scene = "ring";
+    options.lights.push_back({false, osg::Vec3d(0.0, 0.0, 1.6)});
+    ShadowedRender r(options, GetParam(), 512, W, H);
+    ASSERT_TRUE(r.valid());
+    const ossref::Mask mask = r.mask();
+    ASSERT_GT(r.technique->getStatistics().shadowPasses, 1u) << "the light should have cube faces";
+    osg::ref_ptr<osg::Image> classes = osshar::renderClasses(*r.renderer, *r.technique, 0);
+    const osshar::ClassCounts c = osshar::countClasses(*classes);
+    EXPECT_EQ(c.other, 0) << "pixels in none of the four class colours";
+    EXPECT_GT(c.mapShadow, 0);
+    EXPECT_LT(classMaskDisagreement(*classes, mask), 0.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ClassesViewOfCubeFaces, ::testing::Values("shadowmap", "silhouette", "hybrid"));
+
 TEST(HybridStatistics, SilhouettePixelCountMatchesTheClassesView)
 {
     ShadowedRender r("default", "hybrid", 512, W, H);
