@@ -152,6 +152,21 @@ osg::ref_ptr<osg::Geometry> makeGround(float cx, float cy, float side, float hei
     return b.geometry("ground");
 }
 
+osg::ref_ptr<osg::Geometry> merge(const osg::Geometry& a, const osg::Geometry& b)
+{
+    Builder out;
+    for (const osg::Geometry* g : {&a, &b})
+    {
+        const auto& v = static_cast<const osg::Vec3Array&>(*g->getVertexArray());
+        const auto& n = static_cast<const osg::Vec3Array&>(*g->getNormalArray());
+        const auto& triangles = static_cast<const osg::DrawElementsUInt&>(*g->getPrimitiveSet(0));
+        const unsigned int base = static_cast<unsigned int>(out.v->size());
+        for (std::size_t i = 0; i < v.size(); ++i) out.add(v[i], n[i]);
+        for (unsigned int i : triangles) out.idx->push_back(base + i);
+    }
+    return out.geometry("merged");
+}
+
 osg::ref_ptr<osg::Geometry> readOff(const std::string& path, std::string& error)
 {
     std::ifstream in(path);

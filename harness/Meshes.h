@@ -22,6 +22,9 @@ osg::ref_ptr<osg::Geometry> makeTorus(const osg::Vec3& c, float R, float r, unsi
 
 /** A square in the plane z = height, facing +z, of side `side` centred on (cx, cy). */
 osg::ref_ptr<osg::Geometry> makeGround(float cx, float cy, float side, float height = 0.0f);
+/** One geometry holding the triangles of a and b, both made by the functions here (vertices,
+ *  per-vertex normals, one DrawElementsUInt of triangles). */
+osg::ref_ptr<osg::Geometry> merge(const osg::Geometry& a, const osg::Geometry& b);
 
 /** A triangle mesh read from an OFF file (polygons fanned into triangles), or null with a
  *  message in error. Vertices welded as the file gives them; no normals. */

@@ -299,8 +299,22 @@ double cubeFaceFov(unsigned int mapSize, double marginTexels)
     return osg::RadiansToDegrees(2.0 * std::atan(1.0 / inner));
 }
 
+bool canShadow(const LightDescription& light, const CasterPart& part, const osg::BoundingBoxd& receivers)
+{
+    if (!part.box.valid()) return false;
+    if (!part.flat || !receivers.valid() || light.type == LightDescription::DIRECTIONAL) return true;
+    const double lightSide = (light.position - part.planePoint) * part.planeNormal;
+    const double tolerance = 1e-6 * (receivers._max - receivers._min).length(); // float bounds
+    if (std::abs(lightSide) <= tolerance) return true; // the light in the plane: keep it, conservatively
+    for (const osg::Vec3d& corner : boxCorners(receivers))
+        if (((corner - part.planePoint) * part.planeNormal) * (lightSide > 0.0 ? 1.0 : -1.0) < -tolerance)
+            return true; // a receiver corner beyond the plane
+    return false;
+}
+
 std::vector<LightFrustum> fitCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region,
-                                       const osg::BoundingBoxd& casters, unsigned int mapSize)
+                                       const osg::BoundingBoxd& casters, unsigned int mapSize,
+                                       const std::vector<osg::BoundingBoxd>* parts)
 {
     std::vector<LightFrustum> faces;
     if (region.empty() || !casters.valid() || !finite(light.position)) return faces;
@@ -336,6 +350,9 @@ std::vector<LightFrustum> fitCubeFaces(const LightDescription& light, const std:
             return beyond[0] || beyond[1] || beyond[2] || beyond[3] || beyond[4];
         };
         if (outside(region) || outside(casterCorners)) continue;
+        if (parts && std::all_of(parts->begin(), parts->end(),
+                                 [&](const osg::BoundingBoxd& part) { return outside(boxCorners(part)); }))
+            continue; // the casters' box meets the face, no caster does
         Range depth, casterDepth;
         for (const osg::Vec3d& p : region) depth.expand(-(p * f.view).z());
         for (const osg::Vec3d& p : casterCorners) casterDepth.expand(-(p * f.view).z());

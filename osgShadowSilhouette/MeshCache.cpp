@@ -130,25 +130,82 @@ bool allComponentsFinite(const osg::Array& array)
 
 } // namespace
 
-bool MeshCache::hasFiniteVertices(const osg::Geometry& geometry)
+namespace {
+
+/** Whether the points lie in one plane within 1e-6 of their extent; if so, three of them
+ *  spanning it. */
+template <typename Vec>
+bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& spanning)
+{
+    if (points.size() < 3) return false;
+    const osg::Vec3d p0(points.front());
+    osg::Vec3d p1 = p0;
+    for (const Vec& v : points)
+        if ((osg::Vec3d(v) - p0).length2() > (p1 - p0).length2()) p1 = osg::Vec3d(v);
+    const osg::Vec3d axis = p1 - p0;
+    const double extent = axis.length();
+    if (!(extent > 0.0)) return false;
+    osg::Vec3d p2 = p0;
+    double best = 0.0;
+    for (const Vec& v : points)
+    {
+        const double area = ((osg::Vec3d(v) - p0) ^ axis).length();
+        if (area > best) best = area, p2 = osg::Vec3d(v);
+    }
+    osg::Vec3d normal = axis ^ (p2 - p0);
+    // Collinear, or nearly: no plane of their own (a segment casts no shadow, but say no).
+    if (!(normal.length() > 1e-12 * extent * extent)) return false;
+    normal.normalize();
+    const double tolerance = 1e-6 * extent;
+    for (const Vec& v : points)
+        if (std::abs((osg::Vec3d(v) - p0) * normal) > tolerance) return false;
+    spanning = {p0, p1, p2};
+    return true;
+}
+
+} // namespace
+
+MeshCache::FiniteEntry MeshCache::vertexFacts(const osg::Geometry& geometry)
 {
     const osg::Array* vertices = geometry.getVertexArray();
-    if (!vertices || vertices->getNumElements() == 0) return true;
     {
         Lock lock(_mutex);
         auto it = _finite.find(&geometry);
         if (it != _finite.end() && it->second.geometry.get() == &geometry && it->second.vertices == vertices &&
-            it->second.verticesModified == vertices->getModifiedCount())
-            return it->second.finite;
+            it->second.verticesModified == (vertices ? vertices->getModifiedCount() : 0u))
+            return it->second;
     }
-    FiniteEntry entry;
+    FiniteEntry entry; // outside the lock
     entry.geometry = &geometry;
     entry.vertices = vertices;
-    entry.verticesModified = vertices->getModifiedCount();
-    entry.finite = allComponentsFinite(*vertices); // outside the lock
+    entry.verticesModified = vertices ? vertices->getModifiedCount() : 0u;
+    entry.finite = !vertices || allComponentsFinite(*vertices);
+    if (entry.finite && vertices)
+    {
+        if (const auto* v3 = dynamic_cast<const osg::Vec3Array*>(vertices))
+            entry.flat = spanningPlane(v3->asVector(), entry.spanning);
+        else if (const auto* v3d = dynamic_cast<const osg::Vec3dArray*>(vertices))
+            entry.flat = spanningPlane(v3d->asVector(), entry.spanning);
+    }
     Lock lock(_mutex);
     _finite[&geometry] = entry;
-    return entry.finite;
+    return entry;
+}
+
+bool MeshCache::hasFiniteVertices(const osg::Geometry& geometry)
+{
+    const osg::Array* vertices = geometry.getVertexArray();
+    if (!vertices || vertices->getNumElements() == 0) return true;
+    return vertexFacts(geometry).finite;
+}
+
+bool MeshCache::getPlane(const osg::Geometry& geometry, std::array<osg::Vec3d, 3>& spanning)
+{
+    const osg::Array* vertices = geometry.getVertexArray();
+    if (!vertices || vertices->getNumElements() < 3) return false;
+    const FiniteEntry entry = vertexFacts(geometry);
+    if (entry.flat) spanning = entry.spanning;
+    return entry.flat;
 }
 
 void MeshCache::remove(const osg::Geometry* geometry)

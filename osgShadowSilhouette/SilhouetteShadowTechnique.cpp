@@ -167,12 +167,14 @@ private:
 class CasterSignatureVisitor : public FiniteBoundsVisitor
 {
 public:
-    explicit CasterSignatureVisitor(MeshCache& cache) : FiniteBoundsVisitor(cache) {}
+    explicit CasterSignatureVisitor(MeshCache& cache) : FiniteBoundsVisitor(cache), _meshCache(cache) {}
     std::size_t signature = 0;
+    std::vector<CasterPart> parts; ///< each finite drawable: world box, and its plane when flat
 
     void apply(osg::Drawable& drawable) override
     {
         FiniteBoundsVisitor::apply(drawable);
+        addPart(drawable);
         mix(std::hash<const void*>()(&drawable));
         if (!_matrixStack.empty())
             for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
@@ -191,6 +193,34 @@ public:
     }
 
     void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
+
+private:
+    void addPart(const osg::Drawable& drawable)
+    {
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (geometry && !_meshCache.hasFiniteVertices(*geometry)) return; // left out, as from the bounds
+        const osg::BoundingBox& local = drawable.getBoundingBox();
+        if (!local.valid()) return;
+        const osg::Matrixd world = _matrixStack.empty() ? osg::Matrixd() : _matrixStack.back();
+        CasterPart part;
+        for (unsigned int i = 0; i < 8; ++i) part.box.expandBy(osg::Vec3d(local.corner(i)) * world);
+        std::array<osg::Vec3d, 3> spanning;
+        if (geometry && _meshCache.getPlane(*geometry, spanning))
+        {
+            for (osg::Vec3d& p : spanning) p = p * world;
+            osg::Vec3d normal = (spanning[1] - spanning[0]) ^ (spanning[2] - spanning[0]);
+            if (normal.normalize() > 0.0 && std::isfinite(normal.x()) && std::isfinite(normal.y()) &&
+                std::isfinite(normal.z()))
+            {
+                part.flat = true;
+                part.planePoint = spanning[0];
+                part.planeNormal = normal;
+            }
+        }
+        parts.push_back(part);
+    }
+
+    MeshCache& _meshCache;
 };
 
 /** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
@@ -941,6 +971,7 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
     const osg::BoundingBox& box = casters.getBoundingBox();
     frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
     frame.casterSignature = casters.signature;
+    frame.casterParts = std::move(casters.parts);
     frame.nonFinite = casters.nonFinite;
     for (const osg::Drawable* drawable : frame.nonFinite) warnNonFinite(*drawable);
     frame.region = visibleReceiverRegion(cv, frame.receivers);
@@ -957,7 +988,15 @@ std::vector<LightFrustum> SilhouetteShadowTechnique::planLightFrusta(const Frame
     std::vector<LightFrustum> frusta;
     if (frame.mode != SHADOW_VOLUME && light.type == LightDescription::POINT && needsCubeFaces(light, frame.region))
     {
-        frusta = fitCubeFaces(light, frame.region, frame.casters, _shadowMapSize);
+        // Only the faces where a caster that can shadow a receiver lies: a flat caster (a
+        // ground) that every receiver stands on or above, seen from the light, shadows nothing.
+        std::vector<osg::BoundingBoxd> parts;
+        for (const CasterPart& part : frame.casterParts)
+            if (canShadow(light, part, frame.receivers)) parts.push_back(part.box);
+        if (parts.empty() && !frame.casterParts.empty())
+            return {LightFrustum()}; // nothing to shadow: the light is lit unshadowed
+        frusta = fitCubeFaces(light, frame.region, frame.casters, _shadowMapSize,
+                              frame.casterParts.empty() ? nullptr : &parts);
         if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > slotLimit)
         {
             warnOnce(WARN_FACE_SLOTS, "light " + std::to_string(light.lightNum) + " needs " +

@@ -361,6 +361,57 @@ TEST(CubeFaces, FaceFovLeavesAMarginOfTexels)
     EXPECT_LE(cubeFaceFov(1, 4.0), 2.0 * osg::RadiansToDegrees(std::atan(1.25)) + 1e-9) << "capped for tiny maps";
 }
 
+// canShadow(): a flat caster shadows nothing on the light's side of its plane.
+TEST(CubeFaces, AFlatCasterShadowsOnlyBeyondItsPlane)
+{
+    LightDescription point;
+    point.type = LightDescription::POINT;
+    point.position = osg::Vec3d(0, 0, 8);
+    CasterPart ground;
+    ground.box = osg::BoundingBoxd(-20, -20, 0, 20, 20, 0);
+    ground.flat = true;
+    ground.planePoint = osg::Vec3d(3, 4, 0);
+    ground.planeNormal = osg::Vec3d(0, 0, -1); // either orientation
+    const osg::BoundingBoxd standing(-20, -20, 0, 20, 20, 3); // every receiver on or above it
+    EXPECT_FALSE(canShadow(point, ground, standing));
+    ground.planeNormal = osg::Vec3d(0, 0, 1);
+    EXPECT_FALSE(canShadow(point, ground, standing));
+    EXPECT_TRUE(canShadow(point, ground, osg::BoundingBoxd(-20, -20, -1, 20, 20, 3))) << "a receiver below it";
+    point.position = osg::Vec3d(0, 0, -8);
+    EXPECT_TRUE(canShadow(point, ground, standing)) << "the light below, the receivers beyond";
+    point.position = osg::Vec3d(30, 0, 0);
+    EXPECT_TRUE(canShadow(point, ground, standing)) << "the light in the plane: kept";
+    point.position = osg::Vec3d(0, 0, 8);
+    CasterPart box = ground;
+    box.flat = false;
+    box.box = osg::BoundingBoxd(-1, -1, 0, 1, 1, 2);
+    EXPECT_TRUE(canShadow(point, box, standing));
+    EXPECT_FALSE(canShadow(point, CasterPart(), standing)) << "no box: nothing";
+}
+
+// A point light 8 above a ground (casting, flat) with a box under it: the casters' box
+// (ground and box) meets the four side faces and -z, the box alone only -z.
+TEST(CubeFaces, FacesMeetingNoCasterPartAreLeftOut)
+{
+    LightDescription point;
+    point.type = LightDescription::POINT;
+    point.position = osg::Vec3d(0, 0, 8);
+    const osg::BoundingBoxd casters(-20, -20, 0, 20, 20, 2);
+    const std::vector<osg::Vec3d> region = boxRegion(20, 0.1);
+    EXPECT_EQ(fitCubeFaces(point, region, casters, 512).size(), 5u) << "+-x, +-y and -z";
+    const std::vector<osg::BoundingBoxd> box = {osg::BoundingBoxd(-1, -1, 0, 1, 1, 2)};
+    const std::vector<LightFrustum> faces = fitCubeFaces(point, region, casters, 512, &box);
+    ASSERT_EQ(faces.size(), 1u);
+    const osg::Vec3d down = osg::Vec3d(0, 0, -1) * osg::Matrixd::inverse(faces[0].view) - point.position;
+    EXPECT_NEAR(down.z(), -1.0, 1e-9) << "the face looking down";
+    // Boxes in two side faces: those two.
+    const std::vector<osg::BoundingBoxd> sides = {osg::BoundingBoxd(15, -1, 0, 16, 1, 2),
+                                                  osg::BoundingBoxd(-1, -16, 0, 1, -15, 2)};
+    EXPECT_EQ(fitCubeFaces(point, region, casters, 512, &sides).size(), 2u);
+    const std::vector<osg::BoundingBoxd> none;
+    EXPECT_TRUE(fitCubeFaces(point, region, casters, 512, &none).empty());
+}
+
 TEST(CubeFaces, LightInsideARingKeepsTheFacesThatSeeCastersOverTheRegion)
 {
     LightDescription point;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <atomic>
 #include <limits>
 #include <thread>
@@ -115,6 +117,51 @@ TEST(MeshCache, FiniteVerticesFollowTheArrayVersion)
     (*doubles)[1].z() = std::numeric_limits<double>::quiet_NaN();
     g->setVertexArray(doubles.get());
     EXPECT_FALSE(cache->hasFiniteVertices(*g)) << "double arrays are checked too";
+    EXPECT_EQ(0u, cache->getBuildCount());
+}
+
+// getPlane(): a ground quad is flat, a cube and a strip of collinear points are not; the
+// answer follows the vertex array's version, and a tilted plane is found as well.
+TEST(MeshCache, PlaneOfFlatGeometries)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    // A quad in the plane x + y + z = 3 (tilted), and a vertex at its centre.
+    for (const osg::Vec3& p : {osg::Vec3(1, 1, 1), osg::Vec3(3, 0, 0), osg::Vec3(0, 3, 0), osg::Vec3(0, 0, 3),
+                               osg::Vec3(2, 1, 0)})
+        v->push_back(p);
+    g->setVertexArray(v.get());
+    std::array<osg::Vec3d, 3> spanning;
+    ASSERT_TRUE(cache->getPlane(*g, spanning));
+    osg::Vec3d normal = (spanning[1] - spanning[0]) ^ (spanning[2] - spanning[0]);
+    normal.normalize();
+    EXPECT_NEAR(std::abs(normal * osg::Vec3d(1, 1, 1) / std::sqrt(3.0)), 1.0, 1e-9);
+    for (const osg::Vec3d& p : spanning) EXPECT_NEAR(p.x() + p.y() + p.z(), 3.0, 1e-6);
+
+    (*v)[4].z() = 0.01f; // 0.01 off the plane: above 1e-6 of the extent
+    EXPECT_TRUE(cache->getPlane(*g, spanning)) << "an edit without dirty() keeps the cached answer";
+    v->dirty();
+    EXPECT_FALSE(cache->getPlane(*g, spanning));
+    (*v)[4].z() = 0.0f;
+    v->dirty();
+    EXPECT_TRUE(cache->getPlane(*g, spanning));
+
+    EXPECT_FALSE(cache->getPlane(*cube(), spanning));
+    osg::ref_ptr<osg::Geometry> line = new osg::Geometry;
+    const auto points = [](std::initializer_list<osg::Vec3> list) {
+        osg::ref_ptr<osg::Vec3Array> a = new osg::Vec3Array;
+        for (const osg::Vec3& p : list) a->push_back(p);
+        return a;
+    };
+    line->setVertexArray(points({osg::Vec3(0, 0, 0), osg::Vec3(1, 1, 1), osg::Vec3(2, 2, 2)}));
+    EXPECT_FALSE(cache->getPlane(*line, spanning)) << "collinear: no plane of its own";
+    line->setVertexArray(points({osg::Vec3(0, 0, 0), osg::Vec3(1, 0, 0)}));
+    EXPECT_FALSE(cache->getPlane(*line, spanning)) << "fewer than three vertices";
+    osg::ref_ptr<osg::Vec3Array> nan = points({osg::Vec3(0, 0, 0), osg::Vec3(1, 0, 0), osg::Vec3(0, 1, 0)});
+    (*nan)[2].x() = std::numeric_limits<float>::quiet_NaN();
+    line->setVertexArray(nan.get());
+    EXPECT_FALSE(cache->getPlane(*line, spanning)) << "a NaN vertex";
     EXPECT_EQ(0u, cache->getBuildCount());
 }
 
