@@ -169,6 +169,8 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         return false;
     }
     if (a.read("--offscreen")) o.offscreen = true;
+    if (a.read("--ground")) o.ground = true;
+    if (a.read("--check-gl-errors")) o.checkGLErrors = true;
     if (a.read("--moving-light")) o.movingLight = true;
     for (int i = 1; i < a.argc(); ++i)
     {
@@ -193,7 +195,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
       << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F] [--skip-empty-faces on|off]\n"
-      << "    [--moving-light]\n";
+      << "    [--moving-light] [--ground] [--check-gl-errors]\n";
     return s.str();
 }
 

@@ -28,6 +28,7 @@ struct RenderOptions
 {
     std::string file;                 ///< model file; empty: the built-in scene `scene`
     std::string scene = "default";    ///< --scene NAME (built-in scenes)
+    bool ground = false;              ///< --ground: put FILE on a ground, scaled and framed (placeOnGround())
     std::string mode = "shadowmap";   ///< --mode: shadowmap|silhouette|hybrid|volume|none|osgShadow:<Technique>
     unsigned int mapSize = 2048;      ///< --map-size N
     int width = 1024, height = 768;   ///< --size W H
@@ -39,6 +40,7 @@ struct RenderOptions
     int warmup = 3;                   ///< --warmup N
     std::string out, mask;            ///< --out color.png, --mask mask.png (per light: %d, or _<i> before the extension)
     bool offscreen = false;           ///< --offscreen
+    bool checkGLErrors = false;       ///< --check-gl-errors: OSG checks for GL errors after every attribute (slow)
     std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference

@@ -10,6 +10,7 @@
 #include <osgDB/ReadFile>
 #include <osgUtil/SmoothingVisitor>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -362,6 +363,30 @@ std::vector<LightInScene> findLights(osg::Node* root)
     FindLightsVisitor v;
     if (root) root->accept(v);
     return v.found;
+}
+
+Scene placeOnGround(osg::Node* model, const std::string& name)
+{
+    osg::ref_ptr<osg::MatrixTransform> fitted = new osg::MatrixTransform;
+    fitted->addChild(model);
+    fitted->setMatrix(osg::Matrixd::rotate(osg::DegreesToRadians(-30.0), osg::Vec3d(0, 0, 1)));
+    osg::ComputeBoundsVisitor turned;
+    fitted->accept(turned);
+    const osg::BoundingBox bb = turned.getBoundingBox();
+    const double side = bb.valid() ? std::max({bb.xMax() - bb.xMin(), bb.yMax() - bb.yMin(), bb.zMax() - bb.zMin()}) : 0.0;
+    const double scale = side > 0.0 && std::isfinite(side) ? 6.0 / side : 1.0;
+    if (bb.valid())
+        fitted->postMult(osg::Matrixd::translate(-bb.center().x(), -bb.center().y(), -bb.zMin()) *
+                         osg::Matrixd::scale(scale, scale, scale));
+    fitted->getOrCreateStateSet()->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+    const double height = bb.valid() ? (bb.zMax() - bb.zMin()) * scale : 1.0;
+    Scene s{name, new osg::Group, {}};
+    s.root->setName(name + " on a ground");
+    s.root->addChild(coloured(makeGround(0, 0, 16), GROUND));
+    s.root->addChild(fitted.get());
+    const osg::Vec3d center(0.0, 0.0, 0.4 * height);
+    s.view = {center + osg::Vec3d(1.0, -6.5, 2.5 + 0.6 * height), center, osg::Vec3d(0, 0, 1), 40.0};
+    return s;
 }
 
 View defaultView(const osg::BoundingSphere& bound)

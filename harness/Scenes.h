@@ -51,6 +51,13 @@ struct LightInScene
 /** Every LightSource below root that carries an osg::Light, in traversal order. */
 std::vector<LightInScene> findLights(osg::Node* root);
 
+/** A loaded model put on a ground, as the corpus runs see it: turned -30 degrees about z,
+ *  scaled so that its bounding box's largest side is 6 units, its box centred on the z axis
+ *  and standing on z = 0, on a 16 x 16 ground square (which casts and receives) whose top
+ *  is z = 0; GL_NORMALIZE on the scaled model. No light is added. The view looks at the
+ *  model from -y and above, framing it and its shadow's surroundings. */
+Scene placeOnGround(osg::Node* model, const std::string& name);
+
 /** The view osgviewer's home position would give a model: from -y and above, at a distance
  *  that frames the bounding sphere. */
 View defaultView(const osg::BoundingSphere& bound);

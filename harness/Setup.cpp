@@ -1,6 +1,7 @@
 #include "Setup.h"
 #include "Peers.h"
 
+#include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgShadow/ShadowedScene>
 
@@ -36,6 +37,12 @@ osg::ref_ptr<osg::Group> loadContent(const RenderOptions& o, PreparedScene& scen
     }
     else
         group->addChild(node.get());
+    if (o.ground)
+    {
+        Scene placed = placeOnGround(group.get(), osgDB::getSimpleFileName(o.file));
+        scene.view = placed.view;
+        return placed.root;
+    }
     scene.view = defaultView(group->getBound());
     return group;
 }

@@ -12,6 +12,7 @@
  * MEASURE.md (harness/Peers.h); its mask (first light only) is classified from its image. */
 
 #include "Classes.h"
+#include "GLErrors.h"
 #include "Offscreen.h"
 #include "Peers.h"
 #include "RenderOptions.h"
@@ -79,6 +80,7 @@ int runWindowed(osshar::PreparedScene& scene, osg::Node* root, SilhouetteShadowT
 int main(int argc, char** argv)
 {
     osg::ArgumentParser arguments(&argc, argv);
+    osshar::GLErrorCounter& glErrors = osshar::installGLErrorCounter();
     if (arguments.read("-h") || arguments.read("--help"))
     {
         std::cout << osshar::renderOptionsUsage(arguments.getApplicationName());
@@ -132,6 +134,9 @@ int main(int argc, char** argv)
         std::cerr << "osgsilhouetteshadow: cannot create a graphics context (is DISPLAY set? try xvfb-run)\n";
         return 1;
     }
+    if (options.checkGLErrors)
+        if (osg::GraphicsContext* gc = renderer.viewer().getCamera()->getGraphicsContext())
+            gc->getState()->setCheckForGLErrors(osg::State::ONCE_PER_ATTRIBUTE);
     renderer.setSceneData(root.get());
     renderer.setView(scene.view);
     // --moving-light: light 0 turns by +-0.1 degree about the vertical every frame, so that
@@ -232,5 +237,7 @@ int main(int argc, char** argv)
                     c.geometryPixels, c.wrongPixels, c.wrongPct, c.coverageMismatch);
         if (!options.diff.empty()) osgDB::writeImageFile(*ossref::diffImage(mask, reference), perLightName(options.diff, i));
     }
+    // Every frame rendered above, the masks' and images' included.
+    std::printf("gl_errors=%lld\n", glErrors.count());
     return status;
 }
