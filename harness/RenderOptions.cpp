@@ -91,6 +91,34 @@ bool readLights(osg::ArgumentParser& a, std::vector<LightArg>& lights, std::stri
     return true;
 }
 
+/** The one non-option argument left, as the file; a second one is an error. */
+bool takeFile(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
+{
+    for (int i = 1; i < a.argc(); ++i)
+    {
+        if (a.isOption(i)) continue;
+        if (!o.file.empty())
+        {
+            error = std::string("more than one file: '") + o.file + "' and '" + a[i] + "' (or a value without its option)";
+            return false;
+        }
+        o.file = a[i];
+        a.remove(i--);
+    }
+    return true;
+}
+
+/** Options nobody read and values that did not parse ("--map-size abc", an option at the
+ *  end without its value), as the ArgumentParser recorded them. */
+bool reportErrors(osg::ArgumentParser& a, std::string& error)
+{
+    a.reportRemainingOptionsAsUnrecognized();
+    if (!a.errors()) return true;
+    for (const auto& e : a.getErrorMessageMap())
+        error += (error.empty() ? "" : "; ") + e.first;
+    return false;
+}
+
 } // namespace
 
 bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
@@ -129,8 +157,6 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     }
     a.read("--frames", o.frames);
     a.read("--warmup", o.warmup);
-    o.frames = std::max(1, o.frames);
-    o.warmup = std::max(0, o.warmup);
     a.read("--out", o.out);
     a.read("--mask", o.mask);
     a.read("--compare", o.compare);
@@ -172,20 +198,20 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     if (a.read("--ground")) o.ground = true;
     if (a.read("--check-gl-errors")) o.checkGLErrors = true;
     if (a.read("--moving-light")) o.movingLight = true;
-    for (int i = 1; i < a.argc(); ++i)
+    if (o.frames < 1 || o.warmup < 0)
     {
-        if (a.isOption(i)) continue;
-        o.file = a[i];
-        a.remove(i);
-        break;
+        error = "--frames needs at least 1 and --warmup at least 0";
+        return false;
     }
-    return true;
+    return reportErrors(a, error) && takeFile(a, o, error);
 }
 
 std::string renderOptionsUsage(const std::string& program)
 {
     std::ostringstream s;
-    s << program << " [FILE] [--scene default|spheres|poles|cubes]\n"
+    std::string scenes;
+    for (const std::string& name : sceneNames()) scenes += (scenes.empty() ? "" : "|") + name;
+    s << program << " [FILE] [--scene " << scenes << "]\n"
       << "    [--mode shadowmap|silhouette|hybrid|volume|none|osgShadow:ShadowMap|osgShadow:SoftShadowMap|\n"
       << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap]\n"
       << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"

@@ -33,6 +33,8 @@ osg::ref_ptr<osg::Group> loadContent(const RenderOptions& o, PreparedScene& scen
     if (osgShadow::ShadowedScene* ss = dynamic_cast<osgShadow::ShadowedScene*>(node.get()))
     {
         scene.fileTechnique = dynamic_cast<SilhouetteShadowTechnique*>(ss->getShadowTechnique());
+        scene.castsMask = ss->getCastsShadowTraversalMask();
+        scene.receivesMask = ss->getReceivesShadowTraversalMask();
         for (unsigned int i = 0; i < ss->getNumChildren(); ++i) group->addChild(ss->getChild(i));
     }
     else
@@ -127,6 +129,8 @@ bool makeShadowedRoot(const std::string& mode, unsigned int mapSize, PreparedSce
     technique->setMode(m);
     technique->setShadowMapSize(mapSize);
     osg::ref_ptr<osgShadow::ShadowedScene> ss = new osgShadow::ShadowedScene(technique.get());
+    ss->setCastsShadowTraversalMask(scene.castsMask);
+    ss->setReceivesShadowTraversalMask(scene.receivesMask);
     ss->addChild(scene.content.get());
     root = ss;
     return true;

@@ -18,6 +18,13 @@ struct PreparedScene
     View view;
     std::vector<LightInScene> lights;        ///< in GL light-number order of creation
     osg::ref_ptr<osgShadowSilhouette::SilhouetteShadowTechnique> fileTechnique; ///< when the file held one
+    /** The file's ShadowedScene's traversal masks (osgShadow's serializer keeps them), when
+     *  the file held one: the rendered ShadowedScene takes them over. */
+    unsigned int castsMask = ~0u, receivesMask = ~0u;
+
+    /** The traversal mask the reference walks: casters and receivers both (a caster that
+     *  does not receive is not drawn in the eye pass, yet still casts). */
+    unsigned int referenceTraversalMask() const { return castsMask | receivesMask; }
 };
 
 /** Loads options.file (or builds options.scene), unwraps a ShadowedScene, applies

@@ -193,7 +193,7 @@ int main(int argc, char** argv)
     {
         ossref::Mask mask, reference;
         osshar::PeerMask peerMask;
-        if (!options.mask.empty() || !options.compare.empty() || !options.diff.empty())
+        if (!options.mask.empty() || !options.compare.empty() || !options.diff.empty() || !options.reference.empty())
         {
             if (peer)
             {
@@ -213,7 +213,8 @@ int main(int argc, char** argv)
         if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
         {
             reference = ossref::computeReferenceMask(
-                *scene.content, refCamera, osshar::referenceLight(scene.lights[i]), ~0u, ~0u,
+                *scene.content, refCamera, osshar::referenceLight(scene.lights[i]), scene.castsMask,
+                scene.referenceTraversalMask(),
                 options.referenceOffset >= 0.0 ? options.referenceOffset : ossref::DEFAULT_OFFSET_SCALE);
             if (!options.reference.empty()) ossref::writeMask(reference, perLightName(options.reference, i));
         }

@@ -1,0 +1,85 @@
+// The renderer's command line (MEASURE.md) refuses what it cannot honour: unknown options,
+// values that do not parse, options at the end without their value, a second file name.
+#include "RenderOptions.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Parsed
+{
+    bool ok = false;
+    std::string error;
+    osshar::RenderOptions options;
+};
+
+Parsed parse(std::vector<std::string> words)
+{
+    words.insert(words.begin(), "osgsilhouetteshadow");
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    int argc = static_cast<int>(argv.size());
+    argv.push_back(nullptr);
+    osg::ArgumentParser arguments(&argc, argv.data());
+    Parsed p;
+    p.ok = osshar::parseRenderOptions(arguments, p.options, p.error);
+    return p;
+}
+
+struct BadLine
+{
+    const char* name;
+    std::vector<std::string> words;
+    const char* named; ///< what the message must name
+};
+
+class RefusedLines : public ::testing::TestWithParam<BadLine>
+{
+};
+
+} // namespace
+
+TEST(RenderOptions, AGoodLineParses)
+{
+    const Parsed p = parse({"model.osgt", "--mode", "hybrid", "--map-size", "512", "--frames", "3", "--light-dir", "0",
+                            "-1", "2", "--offscreen", "--ground"});
+    ASSERT_TRUE(p.ok) << p.error;
+    EXPECT_EQ(p.options.file, "model.osgt");
+    EXPECT_EQ(p.options.mode, "hybrid");
+    EXPECT_EQ(p.options.mapSize, 512u);
+    EXPECT_EQ(p.options.frames, 3);
+    ASSERT_EQ(p.options.lights.size(), 1u);
+    EXPECT_EQ(p.options.lights[0].vector, osg::Vec3d(0, -1, 2));
+    EXPECT_TRUE(p.options.offscreen);
+    EXPECT_TRUE(p.options.ground);
+}
+
+TEST_P(RefusedLines, WithAMessageNamingTheProblem)
+{
+    const BadLine& c = GetParam();
+    const Parsed p = parse(c.words);
+    EXPECT_FALSE(p.ok) << c.name << " was accepted";
+    EXPECT_NE(p.error.find(c.named), std::string::npos) << c.name << ": the message '" << p.error << "' does not name "
+                                                        << c.named;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Lines, RefusedLines,
+    ::testing::Values(BadLine{"UnknownOption", {"--bogus-flag"}, "--bogus-flag"},
+                      BadLine{"MapSizeNotANumber", {"--map-size", "abc"}, "--map-size"},
+                      BadLine{"TrailingOptionWithoutValue", {"--mode", "volume", "--out"}, "--out"},
+                      BadLine{"ZeroFrames", {"--frames", "0"}, "--frames"},
+                      BadLine{"TwoFiles", {"a.osgt", "b.osgt"}, "b.osgt"},
+                      BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size"},
+                      BadLine{"SizeNotNumbers", {"--size", "wide", "tall"}, "--size"}),
+    [](const ::testing::TestParamInfo<BadLine>& info) { return std::string(info.param.name); });
+
+TEST(RenderOptions, UsageListsEveryBuiltInScene)
+{
+    const std::string usage = osshar::renderOptionsUsage("osgsilhouetteshadow");
+    for (const std::string& scene : osshar::sceneNames())
+        EXPECT_NE(usage.find(scene), std::string::npos) << "--help does not list scene " << scene;
+}
