@@ -11,7 +11,7 @@ cmake --install "$BUILD" --prefix "$PREFIX" >/dev/null
 LIBDIR=$(ls -d "$PREFIX"/lib*/libosgShadowSilhouette.so | xargs dirname)
 for f in include/osgShadowSilhouette/SilhouetteShadowTechnique \
          "${LIBDIR#$PREFIX/}/osgPlugins-3.6.5/osgdb_serializers_osgshadowsilhouette.so" \
-         "${LIBDIR#$PREFIX/}/osgPlugins-3.6.5/osgdb_silhouette.so" \
+         "${LIBDIR#$PREFIX/}/osgPlugins-3.6.5/osgdb_silhouette.so" bin/osgsilhouetteshadow \
          "${LIBDIR#$PREFIX/}/cmake/osgShadowSilhouette/osgShadowSilhouetteConfig.cmake" \
          "${LIBDIR#$PREFIX/}/cmake/osgShadowSilhouette/osgShadowSilhouetteTargets.cmake"; do
   [ -e "$PREFIX/$f" ] || { echo "missing after install: $f"; exit 1; }
@@ -24,4 +24,7 @@ cmake --build "$WORK/consumer" >/dev/null
 unset LD_LIBRARY_PATH
 export OSG_LIBRARY_PATH=$LIBDIR
 "$WORK/consumer/consumer" --save "$WORK/saved.osgt"
+# The installed renderer starts with nothing but its own RUNPATH to find the nodekit.
+MODES=$("$PREFIX/bin/osgsilhouetteshadow" --list-modes)
+[ "$(echo "$MODES" | wc -l)" -eq 4 ] || { echo "installed renderer: unexpected --list-modes output: $MODES"; exit 1; }
 echo "installed into $PREFIX; consumer built and run"
