@@ -16,6 +16,7 @@
 #include <osg/LightSource>
 #include <osg/NodeVisitor>
 #include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 #include <osgShadow/ShadowedScene>
@@ -124,6 +125,24 @@ bool splitModeExtension(const std::string& name, std::string& modelFile, Silhoue
     return false;
 }
 
+/** For "cow.osgt.fancy" where no file of that name exists but "cow.osgt" does: a message
+ *  naming the unknown mode and the valid ones; else empty. */
+std::string unknownMode(const std::string& modelFile)
+{
+    const std::string word = osgDB::getFileExtension(modelFile);
+    const std::string stripped = osgDB::getNameLessExtension(modelFile);
+    if (word.empty() || osgDB::getFileExtension(stripped).empty() || !osgDB::findDataFile(modelFile).empty() ||
+        osgDB::findDataFile(stripped).empty())
+        return "";
+    std::string modes;
+    for (int m = SilhouetteShadowTechnique::SHADOW_MAP; m <= SilhouetteShadowTechnique::SHADOW_VOLUME; ++m)
+        modes += std::string(modes.empty() ? "" : ", ") +
+                 SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m));
+    return "osgShadowSilhouette pseudo-loader: unknown mode \"" + word + "\" in \"" + modelFile +
+           ".silhouette\"; the modes are " + modes + " (model." + osgDB::getFileExtension(stripped) +
+           ".<mode>.silhouette)";
+}
+
 } // namespace
 
 class ReaderWriterSilhouette : public osgDB::ReaderWriter
@@ -151,6 +170,12 @@ public:
         const bool modeNamed = splitModeExtension(osgDB::getNameLessExtension(fileName), modelFile, mode);
         if (modelFile.empty()) return ReadResult::FILE_NOT_HANDLED;
 
+        if (!modeNamed)
+            if (const std::string unknown = unknownMode(modelFile); !unknown.empty())
+            {
+                OSG_WARN << unknown << std::endl;
+                return ReadResult(unknown);
+            }
         osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(modelFile, options);
         if (!model)
         {

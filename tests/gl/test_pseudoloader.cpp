@@ -218,6 +218,15 @@ TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)
     EXPECT_EQ(t->getMaxShadowLights(), 8u);
 }
 
+TEST(PseudoLoader, NamesAnUnknownModeAndTheValidOnes)
+{
+    NotifyCapture capture;
+    EXPECT_EQ(load(modelWithoutLight() + ".fancy.silhouette"), nullptr);
+    EXPECT_NE(capture.text().find("unknown mode \"fancy\""), std::string::npos) << capture.text();
+    for (const char* mode : {"shadowmap", "silhouette", "hybrid", "volume"})
+        EXPECT_NE(capture.text().find(mode), std::string::npos) << capture.text();
+}
+
 TEST(PseudoLoader, UnknownModelIsNotLoaded)
 {
     EXPECT_EQ(load((tempDir() / "missing.osgt.silhouette").string()), nullptr);
