@@ -52,6 +52,8 @@ enum WarningKey
     WARN_LIST_OVERFLOW,
     WARN_LIST_FULL,
     WARN_CONTEXT_MAP_SIZE,
+    WARN_LIGHT_NUM,
+    WARN_DEBUG_LIGHT,
 };
 
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
@@ -806,6 +808,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.effectiveMode = frame.mode;
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
     else prepareFrame(cv, frame);
+    warnAboutMissingLights(lights);
     // Lights whose cone or range misses what the view sees cost nothing: no passes, no slot.
     std::vector<bool> reaches(lights.size());
     for (std::size_t i = 0; i < lights.size(); ++i)
@@ -934,6 +937,22 @@ unsigned int SilhouetteShadowTechnique::listSlots() const
 {
     // Every slot can have lists: they take no texture unit, one shader storage block each.
     return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity(true));
+}
+
+void SilhouetteShadowTechnique::warnAboutMissingLights(const std::vector<FoundLight>& lights) const
+{
+    std::string found;
+    for (const FoundLight& l : lights) found += (found.empty() ? "" : ", ") + std::to_string(l.description.lightNum);
+    const std::string what = lights.empty() ? "the view has no light" : "the view's GL lights are " + found;
+    const bool named = std::any_of(lights.begin(), lights.end(),
+                                   [&](const FoundLight& l) { return l.description.lightNum == _lightNum; });
+    if (_lightNum >= 0 && !named)
+        warnOnce(WARN_LIGHT_NUM, "LightNum " + std::to_string(_lightNum) + " names no light (" + what +
+                                     "); nothing casts a shadow (LightNum -1: every light)");
+    if (_debugView != DEBUG_NONE && _debugLight >= lights.size())
+        warnOnce(WARN_DEBUG_LIGHT, "DebugLight " + std::to_string(_debugLight) + " is not a light of the view (" +
+                                       std::to_string(lights.size()) + " found, DebugLight counts from 0); the " +
+                                       "debug view shows it unlit");
 }
 
 bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
