@@ -13,6 +13,7 @@
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 
 #include <osg/ArgumentParser>
+#include <osg/MatrixTransform>
 #include <osgDB/FileUtils>
 #include <osgDB/WriteFile>
 #include <osgShadow/ShadowedScene>
@@ -23,12 +24,26 @@
 
 namespace {
 
+/** The scene turned so that osgviewer's home view (from -y, level, z up) sees it as the
+ *  scene's own view does: a plain viewer then opens with the shadows in sight, not edge-on
+ *  to the ground. A rigid transform: sizes, the light's placement and the shading stay. */
+osg::ref_ptr<osg::MatrixTransform> homeViewTransform(const osshar::View& view, osg::Node* scene)
+{
+    // lookAt takes the view to eye space (looking along -z, y up); the quarter turn about x
+    // takes -z to +y and y to +z.
+    osg::ref_ptr<osg::MatrixTransform> turned = new osg::MatrixTransform(
+        osg::Matrixd::lookAt(view.eye, view.center, view.up) * osg::Matrixd::rotate(osg::PI_2, osg::X_AXIS));
+    turned->setName("turned toward osgviewer's home view");
+    turned->addChild(scene);
+    return turned;
+}
+
 osg::ref_ptr<osg::Node> shadowedScene(const osshar::Scene& scene)
 {
     osg::ref_ptr<osgShadow::ShadowedScene> root =
         new osgShadow::ShadowedScene(new osgShadowSilhouette::SilhouetteShadowTechnique);
     root->setName(scene.name);
-    root->addChild(scene.root.get());
+    root->addChild(homeViewTransform(scene.view, scene.root.get()).get());
     return root;
 }
 

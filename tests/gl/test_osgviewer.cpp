@@ -134,6 +134,35 @@ TEST_P(OsgviewerScene, MaskHasShadowedAndLitPixels)
     EXPECT_LT(shadowed, 0.9) << "nothing lit in the mask";
 }
 
+// osgviewer's home view looks level from -y at the bounding sphere (CameraManipulator::
+// computeHomePosition, fovy 30): the scene file must show its shadows from there, not the
+// ground edge-on.
+TEST_P(OsgviewerScene, HomeViewShowsTheShadows)
+{
+    technique->setDebugView(Technique::DEBUG_SHADOW_MASK);
+    technique->dirty();
+    const osg::BoundingSphere bound = scene->getBound();
+    auto renderer = std::make_unique<osshar::Renderer>(WIDTH, HEIGHT, true);
+    if (!renderer->valid()) GTEST_SKIP() << "no graphics context";
+    renderer->viewer().setLightingMode(GetParam().lighting);
+    renderer->setSceneData(scene.get());
+    const double distance = bound.radius() / std::sin(osg::DegreesToRadians(15.0));
+    renderer->setView({osg::Vec3d(bound.center()) + osg::Vec3d(0.0, -distance, 0.0), bound.center(), {0, 0, 1}, 30.0});
+    renderer->timeFrames(1, 1);
+    osg::ref_ptr<osg::Image> mask = renderer->renderAndCapture(osg::Vec4(0.5f, 0.5f, 0.5f, 1));
+    const int n = mask->s() * mask->t();
+    int geometry = 0, shadowed = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const double v = luminance(mask->data() + 3 * i);
+        geometry += std::fabs(v - 0.5) > 0.1;
+        shadowed += v < 0.1;
+    }
+    // Level with the ground, the scene covers a sliver of the view.
+    EXPECT_GT(double(geometry) / n, 0.1) << "the scene is seen edge-on from osgviewer's home view";
+    EXPECT_GT(double(shadowed) / n, 0.003) << "too little shadow in sight from osgviewer's home view";
+}
+
 TEST_P(OsgviewerScene, ShadowsDarkenWhatTheMaskShadows)
 {
     // The reference is the same scene and shading with nothing casting a shadow.
