@@ -1,5 +1,7 @@
 #include "RenderOptions.h"
 
+#include <osgShadowSilhouette/PropertyRanges>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -119,20 +121,33 @@ bool reportErrors(osg::ArgumentParser& a, std::string& error)
     return false;
 }
 
+/** The value of an option that sets a technique property, checked against the property's
+ *  range (PropertyRanges): "--map-size 4294967297" is refused, not wrapped. */
+bool readProperty(const char* option, const char* property, const std::string& text, unsigned int& value,
+                  std::string& error)
+{
+    const osgShadowSilhouette::NumericPropertyRange& range = *osgShadowSilhouette::numericPropertyRange(property);
+    double number = 0.0;
+    const bool isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+    if (isNumber && osgShadowSilhouette::inRange(range, number))
+    {
+        value = static_cast<unsigned int>(number);
+        return true;
+    }
+    error = std::string(option) + " " + text + (isNumber ? " is out of range (" : " is not a number (") +
+            osgShadowSilhouette::describeRange(range) + ")";
+    return false;
+}
+
 } // namespace
 
 bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
 {
     a.read("--scene", o.scene);
     a.read("--mode", o.mode);
-    int mapSize = static_cast<int>(o.mapSize);
-    while (a.read("--map-size", mapSize)) {}
-    if (mapSize < 1)
-    {
-        error = "--map-size must be at least 1";
-        return false;
-    }
-    o.mapSize = static_cast<unsigned int>(mapSize);
+    std::string mapSize;
+    while (a.read("--map-size", mapSize))
+        if (!readProperty("--map-size", "ShadowMapSize", mapSize, o.mapSize, error)) return false;
     a.read("--size", o.width, o.height);
     if (o.width < 1 || o.height < 1)
     {
@@ -145,16 +160,10 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     double fovy;
     if (a.read("--fovy", fovy)) o.fovy = fovy;
     if (!readLights(a, o.lights, error)) return false;
-    int budget = 0;
-    if (a.read("--max-shadow-lights", budget))
-    {
-        if (budget < 1)
-        {
-            error = "--max-shadow-lights must be at least 1";
-            return false;
-        }
-        o.maxShadowLights = static_cast<unsigned int>(budget);
-    }
+    std::string budget;
+    if (a.read("--max-shadow-lights", budget) &&
+        !readProperty("--max-shadow-lights", "MaxShadowLights", budget, o.maxShadowLights, error))
+        return false;
     a.read("--frames", o.frames);
     a.read("--warmup", o.warmup);
     a.read("--out", o.out);

@@ -1,4 +1,5 @@
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
+#include <osgShadowSilhouette/PropertyRanges>
 #include <osgShadowSilhouette/ShaderConstants>
 
 #include "ShaderSource.h"
@@ -36,6 +37,22 @@ std::atomic<bool>& emptyFaceSkipping()
 {
     static std::atomic<bool> skip{true};
     return skip;
+}
+
+/** Whether @p value is one property @p name takes (PropertyRanges); a warning naming the
+ *  property, the value, its range and the value kept otherwise. */
+template<typename T>
+bool acceptValue(const char* name, T value, T kept)
+{
+    const NumericPropertyRange* range = numericPropertyRange(name);
+    if (!range || inRange(*range, double(value))) return true;
+    std::ostringstream text, keeping;
+    text << value;
+    keeping << kept;
+    OSG_WARN << refusedValueMessage("osgShadowSilhouette", *range, text.str(), std::isfinite(double(value)),
+                                    keeping.str())
+             << std::endl;
+    return false;
 }
 
 enum WarningKey
@@ -375,23 +392,12 @@ SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::getEffectiveMode() co
 
 void SilhouetteShadowTechnique::setShadowMapSize(unsigned int size)
 {
-    if (size > MAX_MAP_SIZE)
-    {
-        warnOnce(WARN_MAP_SIZE, "ShadowMapSize " + std::to_string(size) + " is larger than " +
-                                    std::to_string(MAX_MAP_SIZE) + "; clamped");
-        size = MAX_MAP_SIZE;
-    }
-    _shadowMapSize = std::max(1u, size);
+    if (acceptValue("ShadowMapSize", size, _shadowMapSize)) _shadowMapSize = size;
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
 {
-    if (!std::isfinite(factor))
-    {
-        OSG_WARN << "osgShadowSilhouette: PolygonOffsetFactor " << factor
-                 << " is not a finite number; using the automatic factor" << std::endl;
-        factor = AUTOMATIC_POLYGON_OFFSET_FACTOR;
-    }
+    if (!acceptValue("PolygonOffsetFactor", factor, _polygonOffsetFactor)) return;
     _polygonOffsetFactor = factor < 0.0f ? AUTOMATIC_POLYGON_OFFSET_FACTOR : factor;
     dirty();
 }
@@ -404,24 +410,27 @@ float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode) cons
 
 void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
 {
-    _polygonOffsetUnits = std::isfinite(units) ? units : 4.0f;
+    if (!acceptValue("PolygonOffsetUnits", units, _polygonOffsetUnits)) return;
+    _polygonOffsetUnits = units;
     dirty();
 }
 
 void SilhouetteShadowTechnique::setLightNum(int lightNum)
 {
-    _lightNum = std::max(-1, lightNum);
+    if (acceptValue("LightNum", lightNum, _lightNum)) _lightNum = lightNum;
 }
 
 void SilhouetteShadowTechnique::setMaxShadowLights(unsigned int count)
 {
-    _maxShadowLights = std::min<unsigned int>(std::max(1u, count), shader::MAX_SHADOW_LIGHTS);
+    if (!acceptValue("MaxShadowLights", count, _maxShadowLights)) return;
+    _maxShadowLights = count;
     dirty();
 }
 
 void SilhouetteShadowTechnique::setBaseTextureUnit(unsigned int unit)
 {
-    _baseTextureUnit = std::max(1u, unit);
+    if (!acceptValue("BaseTextureUnit", unit, _baseTextureUnit)) return;
+    _baseTextureUnit = unit;
     dirty();
 }
 
@@ -438,7 +447,7 @@ void SilhouetteShadowTechnique::setDebugView(DebugView view)
 
 void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
 {
-    _debugLight = std::min<unsigned int>(index, shader::MAX_SCENE_LIGHTS - 1);
+    if (acceptValue("DebugLight", index, _debugLight)) _debugLight = index;
 }
 
 void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
@@ -463,13 +472,7 @@ void SilhouetteShadowTechnique::setDepthPrepass(DepthPrepass prepass)
 
 void SilhouetteShadowTechnique::setShadowRayOffset(float offset)
 {
-    if (!std::isfinite(offset) || offset < 0.0f)
-    {
-        OSG_WARN << "osgShadowSilhouette: ShadowRayOffset " << offset
-                 << " is not a finite number of at least 0; using " << DEFAULT_SHADOW_RAY_OFFSET << std::endl;
-        offset = DEFAULT_SHADOW_RAY_OFFSET;
-    }
-    _shadowRayOffset = offset;
+    if (acceptValue("ShadowRayOffset", offset, _shadowRayOffset)) _shadowRayOffset = offset;
 }
 
 bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, std::size_t triangles,

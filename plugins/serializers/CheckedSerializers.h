@@ -1,7 +1,7 @@
-// Serializers that check what they read: a value the object's setter does not keep (because
-// it is out of range) and an enum name the lookup does not know are reported with
-// OSG_WARN, naming the class, the property and the value read, and the object keeps the
-// value its setter chose. Apart from that they read and write exactly like osgDB's
+// Serializers that check what they read: a number that does not parse or lies outside the
+// property's range (PropertyRanges) and an enum name the lookup does not know are reported
+// with OSG_WARN, naming the class, the property and the value read, and the object keeps
+// the value it had. Apart from that they read and write exactly like osgDB's
 // PropByValSerializer and EnumSerializer, so files stay compatible with OSG's own wrappers.
 //
 // In a wrapper (REGISTER_OBJECT_WRAPPER body), one line per property:
@@ -13,8 +13,13 @@
 #ifndef OSS_PLUGINS_CHECKEDSERIALIZERS_H
 #define OSS_PLUGINS_CHECKEDSERIALIZERS_H
 
+#include <osgShadowSilhouette/PropertyRanges>
+
 #include <osg/Notify>
 #include <osgDB/Serializer>
+
+#include <cmath>
+#include <type_traits>
 
 #include <sstream>
 #include <string>
@@ -48,7 +53,11 @@ inline std::string propertyPrefix(const osg::Object& object, const std::string& 
     return std::string(object.libraryName()) + "::" + object.className() + ": " + property + " ";
 }
 
-/** A PropByValSerializer that warns when the setter did not keep the value read. */
+/** A PropByValSerializer that reads a numeric property strictly: a text value must be a
+ *  whole number token ("12abc" and "abc" are refused, not read as 12 or 0), and a value
+ *  outside the property's range (osgShadowSilhouette/PropertyRanges) is refused before it
+ *  reaches the setter, so that no value wraps or is clamped quietly; either way the warning
+ *  names the property, the value and the range, and the object keeps the value it had. */
 template<typename C, typename P>
 class CheckedSerializer : public osgDB::PropByValSerializer<C, P>
 {
@@ -63,18 +72,34 @@ public:
     {
         if (!is.isBinary() && !is.matchString(this->_name)) return true;
         P value{};
-        is >> value;
+        std::string text;
+        double number = 0.0;
+        bool isNumber = true;
+        if (is.isBinary() || std::is_same<P, bool>::value)
+        {
+            is >> value;
+            text = toText(value);
+            number = double(value);
+        }
+        else
+        {
+            is >> text;
+            isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+        }
         if (is.getException()) return false;
         C& object = static_cast<C&>(obj);
-        const Setter setter = this->_setter;
-        const Getter getter = this->_getter;
-        (object.*setter)(value);
-        const P kept = (object.*getter)();
-        if (!(kept == value))
+        const osgShadowSilhouette::NumericPropertyRange* range = osgShadowSilhouette::numericPropertyRange(this->_name);
+        if (!isNumber || (range && !osgShadowSilhouette::inRange(*range, number)))
         {
-            OSG_WARN << propertyPrefix(obj, this->_name) << toText(value) << " is out of range; using "
-                     << toText(kept) << std::endl;
+            const osgShadowSilhouette::NumericPropertyRange any{this->_name.c_str(), -INFINITY, INFINITY, false, ""};
+            OSG_WARN << osgShadowSilhouette::refusedValueMessage(std::string(obj.libraryName()) + "::" + obj.className(),
+                                                                 range ? *range : any, text, isNumber,
+                                                                 toText((object.*this->_getter)()))
+                     << std::endl;
+            return true;
         }
+        if (!is.isBinary() && !std::is_same<P, bool>::value) value = static_cast<P>(number);
+        (object.*this->_setter)(value);
         return true;
     }
 };

@@ -1,9 +1,12 @@
 #include "PseudoLoaderOptions.h"
 
+#include <osgShadowSilhouette/PropertyRanges>
+
 #include <osg/Notify>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <sstream>
 #include <type_traits>
 
@@ -22,24 +25,6 @@ std::string lower(std::string s)
 void warnValue(const std::string& key, const std::string& value, const std::string& why)
 {
     OSG_WARN << "osgShadowSilhouette pseudo-loader: option " << key << "=" << value << " " << why << std::endl;
-}
-
-/** Parses an unsigned or signed integer; the whole text must be a number. */
-template<typename T>
-bool parseNumber(const std::string& text, T& value)
-{
-    std::istringstream in(text);
-    long long v = 0;
-    if (!(in >> v) || !in.eof()) return false;
-    if (v < 0 && std::is_unsigned<T>::value) return false;
-    value = T(v);
-    return true;
-}
-
-bool parseFloat(const std::string& text, float& value)
-{
-    std::istringstream in(text);
-    return (in >> value) && in.eof();
 }
 
 bool parseBool(const std::string& text, bool& value)
@@ -63,18 +48,26 @@ bool parseDebugView(const std::string& text, SilhouetteShadowTechnique::DebugVie
     return true;
 }
 
-/** Sets a number through the technique's setter and reports a value the setter changed. */
-template<typename T, typename Setter, typename Getter>
-void applyNumber(const std::string& key, const std::string& text, SilhouetteShadowTechnique& t, Setter set, Getter get)
+/** Sets numeric property @p property from option text: a number in its range
+ *  (PropertyRanges) goes to the setter; anything else is refused with a warning naming the
+ *  property, the text and the range, and the technique keeps its value. */
+template<typename T>
+void applyNumber(const char* property, const std::string& text, SilhouetteShadowTechnique& t,
+                 void (SilhouetteShadowTechnique::*set)(T), T (SilhouetteShadowTechnique::*get)() const)
 {
-    T value{};
-    if (!parseNumber(text, value))
+    double number = 0.0;
+    const bool isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+    const osgShadowSilhouette::NumericPropertyRange& range = *osgShadowSilhouette::numericPropertyRange(property);
+    if (isNumber && osgShadowSilhouette::inRange(range, number))
     {
-        warnValue(key, text, "is not a valid number; ignored");
+        (t.*set)(static_cast<T>(number));
         return;
     }
-    (t.*set)(value);
-    if ((t.*get)() != value) warnValue(key, text, "is out of range; using " + std::to_string((t.*get)()));
+    std::ostringstream kept;
+    kept << (t.*get)();
+    OSG_WARN << osgShadowSilhouette::refusedValueMessage("osgShadowSilhouette pseudo-loader option", range, text,
+                                                         isNumber, kept.str())
+             << std::endl;
 }
 
 bool applyOne(const std::string& key, const std::string& value, SilhouetteShadowTechnique& t)
@@ -87,29 +80,30 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
         else warnValue(key, value, "is not a mode (shadowmap, silhouette, hybrid, volume); ignored");
     }
     else if (k == "shadowmapsize" || k == "mapsize")
-        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setShadowMapSize, &SilhouetteShadowTechnique::getShadowMapSize);
+        applyNumber("ShadowMapSize", value, t, &SilhouetteShadowTechnique::setShadowMapSize, &SilhouetteShadowTechnique::getShadowMapSize);
     else if (k == "lightnum")
-        applyNumber<int>(key, value, t, &SilhouetteShadowTechnique::setLightNum, &SilhouetteShadowTechnique::getLightNum);
+        applyNumber("LightNum", value, t, &SilhouetteShadowTechnique::setLightNum, &SilhouetteShadowTechnique::getLightNum);
     else if (k == "maxshadowlights")
-        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setMaxShadowLights, &SilhouetteShadowTechnique::getMaxShadowLights);
+        applyNumber("MaxShadowLights", value, t, &SilhouetteShadowTechnique::setMaxShadowLights, &SilhouetteShadowTechnique::getMaxShadowLights);
     else if (k == "basetextureunit")
-        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setBaseTextureUnit, &SilhouetteShadowTechnique::getBaseTextureUnit);
+        applyNumber("BaseTextureUnit", value, t, &SilhouetteShadowTechnique::setBaseTextureUnit, &SilhouetteShadowTechnique::getBaseTextureUnit);
     else if (k == "debuglight")
-        applyNumber<unsigned int>(key, value, t, &SilhouetteShadowTechnique::setDebugLight, &SilhouetteShadowTechnique::getDebugLight);
+        applyNumber("DebugLight", value, t, &SilhouetteShadowTechnique::setDebugLight, &SilhouetteShadowTechnique::getDebugLight);
     else if (k == "debugview")
     {
         SilhouetteShadowTechnique::DebugView view;
         if (parseDebugView(value, view)) t.setDebugView(view);
-        else warnValue(key, value, "is not a debug view (none, mask); ignored");
+        else warnValue(key, value, "is not a debug view (none, mask, pixels, silmap, classes); ignored");
     }
-    else if (k == "polygonoffsetfactor" || k == "polygonoffsetunits" || k == "shadowrayoffset")
-    {
-        float f = 0.0f;
-        if (!parseFloat(value, f)) warnValue(key, value, "is not a number; ignored");
-        else if (k == "polygonoffsetfactor") t.setPolygonOffsetFactor(f);
-        else if (k == "polygonoffsetunits") t.setPolygonOffsetUnits(f);
-        else t.setShadowRayOffset(f);
-    }
+    else if (k == "polygonoffsetfactor")
+        applyNumber("PolygonOffsetFactor", value, t, &SilhouetteShadowTechnique::setPolygonOffsetFactor,
+                    &SilhouetteShadowTechnique::getPolygonOffsetFactor);
+    else if (k == "polygonoffsetunits")
+        applyNumber("PolygonOffsetUnits", value, t, &SilhouetteShadowTechnique::setPolygonOffsetUnits,
+                    &SilhouetteShadowTechnique::getPolygonOffsetUnits);
+    else if (k == "shadowrayoffset")
+        applyNumber("ShadowRayOffset", value, t, &SilhouetteShadowTechnique::setShadowRayOffset,
+                    &SilhouetteShadowTechnique::getShadowRayOffset);
     else if (k == "hybridmethod")
     {
         const std::string m = lower(value);

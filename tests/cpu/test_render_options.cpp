@@ -73,7 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadLine{"TrailingOptionWithoutValue", {"--mode", "volume", "--out"}, "--out"},
                       BadLine{"ZeroFrames", {"--frames", "0"}, "--frames"},
                       BadLine{"TwoFiles", {"a.osgt", "b.osgt"}, "b.osgt"},
-                      BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size"},
+                      BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size -5 is out of range (1 to 16384"},
+                      BadLine{"WrappingMapSize", {"--map-size", "4294967297"}, "--map-size 4294967297 is out of range"},
+                      BadLine{"TooManyLights", {"--max-shadow-lights", "9"}, "--max-shadow-lights 9 is out of range"},
                       BadLine{"SizeNotNumbers", {"--size", "wide", "tall"}, "--size"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return std::string(info.param.name); });
 

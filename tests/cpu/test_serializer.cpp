@@ -1,6 +1,6 @@
 // The serializer plugin osgdb_serializers_osgshadowsilhouette: every property of
 // SilhouetteShadowTechnique survives .osgt, .osgb and .osgx (through osgDB and through the
-// stock osgconv), enums are written by name, and bad values are reported and clamped.
+// stock osgconv), enums are written by name, and bad values are reported and refused.
 #include "test_serializer_properties.h"
 
 #include <gtest/gtest.h>
@@ -257,7 +257,7 @@ class BadInput : public ::testing::TestWithParam<BadValue>
 {
 };
 
-TEST_P(BadInput, WarnsNamingPropertyAndValueAndClamps)
+TEST_P(BadInput, WarnsNamingPropertyValueAndRangeAndKeepsTheDefault)
 {
     const BadValue& bad = GetParam();
     const fs::path file = tempDir() / (std::string("bad_") + bad.name + ".osgt");
@@ -285,16 +285,24 @@ INSTANTIATE_TEST_SUITE_P(
                  [](const Technique& t) { return t.getMode() == Technique::SHADOW_MAP; }},
         BadValue{"UnknownDebugView", "DebugView DEBUG_SHADOW_MASK", "DebugView XRAY", "DebugView 'XRAY' is unknown",
                  [](const Technique& t) { return t.getDebugView() == Technique::DEBUG_NONE; }},
-        BadValue{"ZeroMapSize", "ShadowMapSize 1024", "ShadowMapSize 0", "ShadowMapSize 0 is out of range; using 1",
-                 [](const Technique& t) { return t.getShadowMapSize() == 1u; }},
+        BadValue{"ZeroMapSize", "ShadowMapSize 1024", "ShadowMapSize 0", "ShadowMapSize 0 is out of range (1 to 16384",
+                 [](const Technique& t) { return t.getShadowMapSize() == 2048u; }},
         BadValue{"HugeMapSize", "ShadowMapSize 1024", "ShadowMapSize 99999", "ShadowMapSize 99999 is out of range",
-                 [](const Technique& t) { return t.getShadowMapSize() == 16384u; }},
-        BadValue{"TooManyLights", "MaxShadowLights 2", "MaxShadowLights 99", "MaxShadowLights 99 is out of range",
-                 [](const Technique& t) { return t.getMaxShadowLights() == 8u; }},
-        BadValue{"NegativeLightNum", "LightNum 3", "LightNum -7", "LightNum -7 is out of range; using -1",
+                 [](const Technique& t) { return t.getShadowMapSize() == 2048u; }},
+        BadValue{"WrappingMapSize", "ShadowMapSize 1024", "ShadowMapSize 4294967297",
+                 "ShadowMapSize 4294967297 is out of range (1 to 16384, whole", [](const Technique& t) { return t.getShadowMapSize() == 2048u; }},
+        BadValue{"NegativeMapSize", "ShadowMapSize 1024", "ShadowMapSize -5", "ShadowMapSize -5 is out of range",
+                 [](const Technique& t) { return t.getShadowMapSize() == 2048u; }},
+        BadValue{"WordMapSize", "ShadowMapSize 1024", "ShadowMapSize abc", "ShadowMapSize abc is not a finite number",
+                 [](const Technique& t) { return t.getShadowMapSize() == 2048u; }},
+        BadValue{"TooManyLights", "MaxShadowLights 2", "MaxShadowLights 99", "MaxShadowLights 99 is out of range (1 to 8",
+                 [](const Technique& t) { return t.getMaxShadowLights() == 4u; }},
+        BadValue{"NegativeLightNum", "LightNum 3", "LightNum -7", "LightNum -7 is out of range (-1 to 7, whole: -1: every light); keeping -1",
                  [](const Technique& t) { return t.getLightNum() == -1; }},
         BadValue{"TextureUnitZero", "BaseTextureUnit 5", "BaseTextureUnit 0", "BaseTextureUnit 0 is out of range",
-                 [](const Technique& t) { return t.getBaseTextureUnit() >= 1u; }}),
+                 [](const Technique& t) { return t.getBaseTextureUnit() == 8u; }},
+        BadValue{"NegativeRayOffset", "ShadowRayOffset [0-9.e-]+", "ShadowRayOffset -0.5", "ShadowRayOffset -0.5 is out of range (0 to 1",
+                 [](const Technique& t) { return t.getShadowRayOffset() == Technique::DEFAULT_SHADOW_RAY_OFFSET; }}),
     [](const ::testing::TestParamInfo<BadValue>& info) { return std::string(info.param.name); });
 
 TEST(Serializer, OsgconvRoundTripKeepsEveryProperty)

@@ -347,13 +347,49 @@ TEST(StressLightSpace, NonFiniteOrZeroLightsAreRefused)
     EXPECT_FALSE(fitDirectionalFrustum(osg::Vec3d(0, 0, 0), corners(b), b, 1024).valid);
 }
 
-TEST(StressTechnique, MapSizeAboveTheLimitIsClampedWithAWarning)
+TEST(StressTechnique, MapSizeOutOfRangeIsRefusedWithAWarning)
 {
     osstest::NotifyCapture notes;
     osg::ref_ptr<SilhouetteShadowTechnique> t = new SilhouetteShadowTechnique;
+    t->setShadowMapSize(512);
     t->setShadowMapSize(1u << 20);
-    EXPECT_EQ(t->getShadowMapSize(), 16384u);
-    EXPECT_TRUE(notes.warned("1048576")) << notes.warnings();
+    EXPECT_EQ(t->getShadowMapSize(), 512u);
+    EXPECT_TRUE(notes.warned("ShadowMapSize 1048576 is out of range (1 to 16384")) << notes.warnings();
+    EXPECT_TRUE(notes.warned("keeping 512")) << notes.warnings();
     t->setShadowMapSize(0);
-    EXPECT_EQ(t->getShadowMapSize(), 1u);
+    EXPECT_EQ(t->getShadowMapSize(), 512u);
+    t->setShadowMapSize(16384);
+    EXPECT_EQ(t->getShadowMapSize(), 16384u);
+}
+
+// Every numeric setter refuses what its range (PropertyRanges) excludes and keeps its value.
+TEST(StressTechnique, SettersKeepTheirValueOnBadInput)
+{
+    osstest::NotifyCapture notes;
+    osg::ref_ptr<SilhouetteShadowTechnique> t = new SilhouetteShadowTechnique;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    t->setMaxShadowLights(9);
+    t->setMaxShadowLights(0);
+    t->setLightNum(-2);
+    t->setLightNum(8);
+    t->setBaseTextureUnit(0);
+    t->setBaseTextureUnit(32);
+    t->setDebugLight(8);
+    t->setShadowRayOffset(-1e-6f);
+    t->setShadowRayOffset(nan);
+    t->setPolygonOffsetUnits(nan);
+    t->setPolygonOffsetFactor(std::numeric_limits<float>::infinity());
+    osg::ref_ptr<SilhouetteShadowTechnique> defaults = new SilhouetteShadowTechnique;
+    EXPECT_EQ(t->getMaxShadowLights(), defaults->getMaxShadowLights());
+    EXPECT_EQ(t->getLightNum(), defaults->getLightNum());
+    EXPECT_EQ(t->getBaseTextureUnit(), defaults->getBaseTextureUnit());
+    EXPECT_EQ(t->getDebugLight(), defaults->getDebugLight());
+    EXPECT_EQ(t->getShadowRayOffset(), defaults->getShadowRayOffset());
+    EXPECT_EQ(t->getPolygonOffsetUnits(), defaults->getPolygonOffsetUnits());
+    EXPECT_EQ(t->getPolygonOffsetFactor(), defaults->getPolygonOffsetFactor());
+    for (const char* part : {"MaxShadowLights 9 is out of range (1 to 8", "MaxShadowLights 0", "LightNum -2", "LightNum 8",
+                             "BaseTextureUnit 0", "BaseTextureUnit 32", "DebugLight 8", "ShadowRayOffset -1e-06",
+                             "ShadowRayOffset nan is not a finite number", "PolygonOffsetUnits nan",
+                             "PolygonOffsetFactor inf"})
+        EXPECT_TRUE(notes.warned(part)) << part << "\n" << notes.warnings();
 }

@@ -209,13 +209,30 @@ TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)
         load(modelWithoutLight() + ".silhouette", "ShadowMapSize=big Mode=fancy DebugView=xray MaxShadowLights=99");
     Technique* t = techniqueOf(scene.get());
     ASSERT_NE(t, nullptr);
-    EXPECT_NE(capture.text().find("ShadowMapSize=big"), std::string::npos) << capture.text();
+    EXPECT_NE(capture.text().find("ShadowMapSize big is not a finite number"), std::string::npos) << capture.text();
     EXPECT_NE(capture.text().find("Mode=fancy"), std::string::npos) << capture.text();
     EXPECT_NE(capture.text().find("DebugView=xray"), std::string::npos) << capture.text();
-    EXPECT_NE(capture.text().find("MaxShadowLights=99 is out of range; using 8"), std::string::npos) << capture.text();
+    EXPECT_NE(capture.text().find("MaxShadowLights 99 is out of range (1 to 8, whole); keeping 4"), std::string::npos)
+        << capture.text();
     EXPECT_EQ(t->getShadowMapSize(), osg::ref_ptr<Technique>(new Technique)->getShadowMapSize());
     EXPECT_EQ(t->getMode(), Technique::SHADOW_MAP);
-    EXPECT_EQ(t->getMaxShadowLights(), 8u);
+    EXPECT_EQ(t->getMaxShadowLights(), 4u);
+}
+
+// Values that would wrap or be clamped quietly are refused, and the defaults kept.
+TEST(PseudoLoader, RefusesValuesOutsideTheRange)
+{
+    NotifyCapture capture;
+    osg::ref_ptr<osgShadow::ShadowedScene> scene =
+        load(modelWithoutLight() + ".silhouette", "ShadowMapSize=4294967297 DebugLight=-1 ShadowRayOffset=nan");
+    Technique* t = techniqueOf(scene.get());
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ(t->getShadowMapSize(), 2048u);
+    EXPECT_EQ(t->getDebugLight(), 0u);
+    EXPECT_EQ(t->getShadowRayOffset(), Technique::DEFAULT_SHADOW_RAY_OFFSET);
+    for (const char* part : {"ShadowMapSize 4294967297 is out of range (1 to 16384", "DebugLight -1 is out of range",
+                             "ShadowRayOffset nan is not a finite number"})
+        EXPECT_NE(capture.text().find(part), std::string::npos) << part << "\n" << capture.text();
 }
 
 TEST(PseudoLoader, NamesAnUnknownModeAndTheValidOnes)

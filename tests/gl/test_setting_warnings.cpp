@@ -24,8 +24,8 @@ unsigned int shadowedWithLightNum(int lightNum)
 TEST(SettingWarnings, LightNumNamingNoLight)
 {
     osstest::NotifyCapture capture;
-    EXPECT_EQ(shadowedWithLightNum(9), 0u);
-    EXPECT_TRUE(capture.warned("LightNum 9 names no light (the view's GL lights are 0)")) << capture.warnings();
+    EXPECT_EQ(shadowedWithLightNum(3), 0u);
+    EXPECT_TRUE(capture.warned("LightNum 3 names no light (the view's GL lights are 0)")) << capture.warnings();
 }
 
 TEST(SettingWarnings, AnExistingLightNumIsQuiet)
