@@ -65,6 +65,17 @@ void placeLight(osg::Light& light, const LightArg& a, const osg::Matrixd& localT
     }
 }
 
+/** A GL light number above those of every light of the scene: a loaded model's lights may
+ *  hold any numbers (the AC plugin's first light is GL_LIGHT1), and two lights of one number
+ *  are one light to OpenGL. */
+int freeLightNum(osg::Node* content)
+{
+    int num = 0;
+    for (const LightInScene& l : findLights(content))
+        num = std::max(num, l.source->getLight()->getLightNum() + 1);
+    return num;
+}
+
 void applyLights(const RenderOptions& o, PreparedScene& scene)
 {
     scene.lights = findLights(scene.content.get());
@@ -74,7 +85,8 @@ void applyLights(const RenderOptions& o, PreparedScene& scene)
             placeLight(*scene.lights[i].source->getLight(), o.lights[i], scene.lights[i].localToWorld);
         else
         {
-            osg::ref_ptr<osg::LightSource> source = makeLight(osg::Vec4(0, 0, 1, 0), static_cast<int>(i));
+            osg::ref_ptr<osg::LightSource> source =
+                makeLight(osg::Vec4(0, 0, 1, 0), freeLightNum(scene.content.get()));
             placeLight(*source->getLight(), o.lights[i], osg::Matrixd::identity());
             scene.content->addChild(source.get());
         }

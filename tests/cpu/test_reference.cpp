@@ -11,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <osg/Billboard>
 #include <osg/Geode>
+#include <osg/LOD>
 #include <osg/Geometry>
 #include <osg/Group>
 #include <osg/MatrixTransform>
@@ -21,6 +23,7 @@
 #include <osg/Viewport>
 #include <osgDB/ReadFile>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -28,6 +31,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <vector>
 
 namespace {
 
@@ -364,6 +368,68 @@ TEST(ReferenceDirectional, CamerasAndSwitches)
     const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({1, 0, 1}));
     EXPECT_EQ(m.count(0), 400);
     EXPECT_EQ(m.count(128), kBackground);
+}
+
+/** Heights of the collected triangles' vertices, to tell which LOD child was collected. */
+std::vector<double> heights(const ossref::TriangleSoup& soup)
+{
+    std::vector<double> z;
+    for (const osg::Vec3d& v : soup.vertices) z.push_back(v.z());
+    return z;
+}
+
+/** An LOD whose children are quads [-5, 5]^2 at heights 1 (range [0, split)) and 2
+ *  ([split, 1e9)). */
+osg::ref_ptr<osg::LOD> twoLevels(osg::LOD::RangeMode mode, float split)
+{
+    osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+    lod->setRangeMode(mode);
+    lod->addChild(geode(quad(-5, 5, -5, 5, 1).get()), 0.0f, split);
+    lod->addChild(geode(quad(-5, 5, -5, 5, 2).get()), split, 1e9f);
+    return lod;
+}
+
+TEST(ReferenceViewpoint, LodByDistanceFromTheEye)
+{
+    // The eye is ~999 units from the LOD's centre: a cull traversal draws the far child;
+    // without a camera the collector takes the child in range at distance 0.
+    const osg::ref_ptr<osg::LOD> lod = twoLevels(osg::LOD::DISTANCE_FROM_EYE_POINT, 500.0f);
+    const Camera far = topCamera();
+    EXPECT_EQ(heights(ossref::collectTriangles(*lod, &far)), std::vector<double>(6, 2.0));
+    EXPECT_EQ(heights(ossref::collectTriangles(*lod)), std::vector<double>(6, 1.0));
+    Camera near = far;
+    near.eye.z() = 400.0;
+    EXPECT_EQ(heights(ossref::collectTriangles(*lod, &near)), std::vector<double>(6, 1.0));
+}
+
+TEST(ReferenceViewpoint, LodByPixelSizeOnScreen)
+{
+    // The LOD's bounding sphere (radius ~7.1) seen from 1000 units spans ~140 pixels of the
+    // 300-pixel viewport (10 pixels a unit), from 3000 units ~47: OSG's pixel size is the
+    // sphere's diameter on screen.
+    const osg::ref_ptr<osg::LOD> lod = twoLevels(osg::LOD::PIXEL_SIZE_ON_SCREEN, 100.0f);
+    Camera c = topCamera();
+    EXPECT_EQ(heights(ossref::collectTriangles(*lod, &c)), std::vector<double>(6, 2.0));
+    c.eye.z() = 3000.0;
+    EXPECT_EQ(heights(ossref::collectTriangles(*lod, &c)), std::vector<double>(6, 1.0));
+}
+
+TEST(ReferenceViewpoint, BillboardsTurnTowardTheEye)
+{
+    // A square in the x-z plane (a billboard's front faces -y) turned toward the eye above
+    // lies flat: all its corners at one height. Stored, it stands upright.
+    osg::ref_ptr<osg::Geometry> upright = quad(-1, 1, -1, 1, 0);
+    osg::Vec3Array& corners = static_cast<osg::Vec3Array&>(*upright->getVertexArray());
+    for (osg::Vec3& corner : corners) corner.set(corner.x(), 0.0f, corner.y()); // (x, y, 0) -> (x, 0, y)
+    osg::ref_ptr<osg::Billboard> billboard = new osg::Billboard;
+    billboard->setMode(osg::Billboard::POINT_ROT_EYE);
+    billboard->addDrawable(upright.get(), osg::Vec3(0, 0, 0));
+    const Camera c = topCamera();
+    const std::vector<double> turned = heights(ossref::collectTriangles(*billboard, &c));
+    ASSERT_EQ(turned.size(), 6u);
+    for (double z : turned) EXPECT_NEAR(z, turned[0], 1e-6);
+    const std::vector<double> stored = heights(ossref::collectTriangles(*billboard));
+    EXPECT_NE(*std::min_element(stored.begin(), stored.end()), *std::max_element(stored.begin(), stored.end()));
 }
 
 TEST(ReferenceDirectional, CastsMaskCountsTrianglesThatCast)

@@ -4,9 +4,12 @@
 
 #include <embree3/rtcore.h>
 
+#include <osg/Billboard>
 #include <osg/BoundingBox>
 #include <osg/Camera>
+#include <osg/CullingSet>
 #include <osg/Geometry>
+#include <osg/LOD>
 #include <osg/Notify>
 #include <osg/NodeVisitor>
 #include <osg/Transform>
@@ -81,8 +84,9 @@ struct VertexSink
 class TriangleCollector : public osg::NodeVisitor
 {
 public:
-    TriangleCollector(unsigned int castsMask, unsigned int traversalMask, TriangleSoup& out)
-        : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _castsMask(castsMask & traversalMask), _out(out)
+    TriangleCollector(unsigned int castsMask, unsigned int traversalMask, const Camera* camera, TriangleSoup& out)
+        : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _castsMask(castsMask & traversalMask), _out(out),
+          _camera(camera)
     {
         setTraversalMask(traversalMask);
     }
@@ -101,6 +105,40 @@ public:
         if (transform.computeLocalToWorldMatrix(local, this)) _matrix = local;
         inScope(transform, [&] { traverse(transform); });
         _matrix = saved;
+    }
+    /** With a camera, the children a cull traversal of that view draws (osgUtil's
+     *  CullVisitor with LOD scale 1); without one, every child in range at distance 0
+     *  (OSG's own choice for visitors that are not cull visitors). */
+    void apply(osg::LOD& lod) override
+    {
+        if (!_camera) return apply(static_cast<osg::Group&>(lod));
+        const float range = lodRange(lod);
+        inScope(lod, [&] {
+            const unsigned int n = std::min<unsigned int>(lod.getNumChildren(), lod.getNumRanges());
+            for (unsigned int i = 0; i < n; ++i)
+                if (lod.getMinRange(i) <= range && range < lod.getMaxRange(i)) lod.getChild(i)->accept(*this);
+        });
+    }
+    /** With a camera, each drawable turned toward its eye as the CullVisitor turns it. */
+    void apply(osg::Billboard& billboard) override
+    {
+        if (!_camera) return apply(static_cast<osg::Geode&>(billboard));
+        // computeMatrix() reads the eye's up direction from a model-view matrix: turn the
+        // drawable in eye space, then go back to world space.
+        const osg::Vec3 eyeLocal = eyeInLocal();
+        const osg::Matrixd view = viewMatrix();
+        const osg::Matrixd viewToWorld = osg::Matrixd::inverse(view);
+        inScope(billboard, [&] {
+            const osg::Matrixd saved = _matrix;
+            for (unsigned int i = 0; i < billboard.getNumDrawables(); ++i)
+            {
+                osg::Matrix modelView = saved * view;
+                billboard.computeMatrix(modelView, eyeLocal, billboard.getPosition(i));
+                _matrix = modelView * viewToWorld;
+                billboard.getDrawable(i)->accept(*this);
+            }
+            _matrix = saved;
+        });
     }
     void apply(osg::Drawable& drawable) override { inScope(drawable, [&] { addDrawable(drawable); }); }
     void apply(osg::Geometry& geometry) override { inScope(geometry, [&] { addGeometry(geometry); }); }
@@ -154,8 +192,28 @@ private:
         drawable.accept(functor);
     }
 
+    osg::Vec3d eyeInLocal() const { return _camera->eye * osg::Matrixd::inverse(_matrix); }
+    osg::Matrixd viewMatrix() const { return osg::Matrixd::lookAt(_camera->eye, _camera->center, _camera->up); }
+
+    /** What osg::LOD compares with its ranges in a cull traversal: the distance from the eye
+     *  to its centre, or the pixel size of its bounding sphere on the viewport. */
+    float lodRange(const osg::LOD& lod) const
+    {
+        if (lod.getRangeMode() == osg::LOD::DISTANCE_FROM_EYE_POINT)
+            return float((osg::Vec3d(lod.getCenter()) - eyeInLocal()).length());
+        const osg::Matrixd view = viewMatrix();
+        const osg::Matrixd projection =
+            osg::Matrixd::perspective(_camera->fovyDeg, _camera->width / double(_camera->height), 1.0, 2.0);
+        osg::ref_ptr<osg::Viewport> viewport = new osg::Viewport(0, 0, _camera->width, _camera->height);
+        const osg::Vec4 pixelSizeVector =
+            osg::CullingSet::computePixelSizeVector(*viewport, projection, _matrix * view);
+        const osg::BoundingSphere& bound = lod.getBound();
+        return std::fabs(bound.radius() / (bound.center() * pixelSizeVector));
+    }
+
     unsigned int _castsMask;
     TriangleSoup& _out;
+    const Camera* _camera;
     osg::Matrixd _matrix;
     bool _casts = true;
 };
@@ -261,8 +319,14 @@ void reportEmbreeError(void*, RTCError code, const char* message)
 
 TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask, unsigned int traversalMask)
 {
+    return collectTriangles(scene, nullptr, castsMask, traversalMask);
+}
+
+TriangleSoup collectTriangles(const osg::Node& scene, const Camera* camera, unsigned int castsMask,
+                              unsigned int traversalMask)
+{
     TriangleSoup soup;
-    TriangleCollector collector(castsMask, traversalMask, soup);
+    TriangleCollector collector(castsMask, traversalMask, camera, soup);
     // The visitor only reads the graph; accept() is not const in OSG.
     const_cast<osg::Node&>(scene).accept(collector);
     return soup;
@@ -494,7 +558,7 @@ Mask Tracer::render(const Camera& camera, const Light& light, unsigned int threa
 Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light, unsigned int castsMask,
                           unsigned int traversalMask, double offsetScale)
 {
-    Tracer tracer(scene, castsMask, traversalMask);
+    Tracer tracer(collectTriangles(scene, &camera, castsMask, traversalMask));
     tracer.setOffsetScale(offsetScale);
     return tracer.render(camera, light);
 }

@@ -124,6 +124,14 @@ struct TriangleSoup
 TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask = ~0u,
                               unsigned int traversalMask = ~0u);
 
+/** collectTriangles() as a view through `camera` draws the scene: osg::LOD children chosen
+ *  by the camera's distance to their centre or their pixel size on its viewport (LOD scale
+ *  1, as osgUtil::CullVisitor), osg::Billboard drawables turned toward its eye. A null
+ *  camera gives the overload above (LOD children in range at distance 0, billboards as
+ *  they are stored). */
+TriangleSoup collectTriangles(const osg::Node& scene, const Camera* camera, unsigned int castsMask = ~0u,
+                              unsigned int traversalMask = ~0u);
+
 /** A scene prepared for ray casting (Embree BVHs built once), to render reference masks
  *  for several cameras and lights. render() is const and may be called from several
  *  threads. Throws std::runtime_error if Embree cannot be initialised. Measured on two
@@ -159,7 +167,8 @@ private:
 /** The shadow ray's offset as a share of the scene's radius (computeReferenceMask). */
 constexpr double DEFAULT_OFFSET_SCALE = 1e-6;
 
-/** The exact reference mask. For each pixel one primary ray (tnear 0, no far limit);
+/** The exact reference mask of the triangles that a view through `camera` draws
+ *  (collectTriangles with the camera). For each pixel one primary ray (tnear 0, no far limit);
  *  no hit -> 128. The hit is moved onto its triangle's plane in double precision (Embree's
  *  hit distance is a float). At the hit the geometric normal of the triangle, flipped to
  *  face the camera, is N; L is the normalised direction to the light. N.L <= 0 -> 0; a

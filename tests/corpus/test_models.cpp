@@ -1,0 +1,181 @@
+// Real-world models (Debian's assimp-testmodels, read by OSG's own plugins) on a ground, as
+// scripts/corpus.sh renders them: a directional and a point light at once, every mode, each
+// light's mask against the exact reference. The subset is small and diverse: open meshes,
+// non-manifold and inconsistently wound ones, textured ones, models of many parts. Measured
+// errors that miss a mode's bound today are listed in kKnownFailures with the defect.
+#include "GLErrors.h"
+#include "gl/StressSupport.h"
+
+#include <osgDB/FileUtils>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <ostream>
+#include <string>
+
+using osstest::ShadowedRender;
+
+namespace {
+
+constexpr int W = 512, H = 384;
+const char* const kCorpusDir = "/usr/share/assimp/models";
+
+struct Model
+{
+    const char* name; ///< the test's name
+    const char* path; ///< relative to kCorpusDir
+    const char* why;  ///< what it brings to the subset
+};
+
+const Model kModels[] = {
+    {"SpiderObj", "OBJ/spider.obj", "textured, 18 parts, 72 open edges"},
+    {"SpiderStl", "STL/Spider_ascii.stl", "the same spider unindexed: 10 flipped edges (inconsistent winding)"},
+    {"Teapots", "Collada/teapots.DAE", "8 parts, 163 open and 59 non-manifold edges"},
+    {"MaxExport", "STL/3DSMaxExport.STL", "24 closed parts, 16 non-manifold edges"},
+    {"Wuson", "OBJ/WusonOBJ.obj", "51 parts, 412 open edges, 4 flipped edges"},
+    {"Duck", "Collada/duck.dae", "textured, closed, one part"},
+    {"Test3ds", "3DS/test1.3ds", "textured, 9 parts under transforms"},
+    {"SphereWithHole", "STL/sphereWithHole.stl", "a closed sphere with a hole (9 open edges)"},
+    {"Regression3429812", "OBJ/regr_3429812.obj", "4 triangles: a non-manifold edge, every edge flipped"},
+    {"Hierarchy", "LWO/LWO2/hierarchy.lwo", "4 parts in a hierarchy of layers"},
+};
+
+struct Mode
+{
+    const char* name;
+    unsigned int mapSize;
+    double boundPct; ///< wrong_pct bound of every light
+};
+
+// The map modes' bounds: the largest error measured over the subset outside the known
+// failures (shadowmap 0.228%, silhouette 0.067%) with a margin of a third or so.
+const Mode kModes[] = {
+    {"shadowmap", 2048, 0.3},
+    {"silhouette", 2048, 0.1},
+    {"hybrid", 1024, 0.01},
+    {"volume", 2048, 0.01},
+};
+
+/** Cases whose wrong_pct misses their mode's bound today (512 x 384, measured on llvmpipe):
+ *  model/mode/light -> the measured error and the defect behind it. */
+const std::map<std::string, std::string> kKnownFailures = {
+    {"SpiderStl/volume/directional", "0.023%: SHADOW_VOLUME on a mesh with inconsistent winding (10 flipped edges)"},
+    {"SpiderStl/volume/point", "0.035%: SHADOW_VOLUME on a mesh with inconsistent winding (10 flipped edges)"},
+    {"Teapots/shadowmap/directional", "0.363%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/shadowmap/point", "0.465%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/silhouette/directional", "0.329%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/silhouette/point", "0.390%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/hybrid/directional", "0.286%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/hybrid/point", "0.334%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/volume/directional", "0.082%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Teapots/volume/point", "0.090%: lid and body seams (163 open, 59 non-manifold edges)"},
+    {"Test3ds/hybrid/point", "0.0105%: just over the bound, at the point light's shadow edges"},
+    {"Regression3429812/volume/directional", "0.033%: SHADOW_VOLUME on 4 triangles with a non-manifold edge, all flipped"},
+    {"Regression3429812/volume/point", "0.090%: SHADOW_VOLUME on 4 triangles with a non-manifold edge, all flipped"},
+};
+
+/** Models whose mask and reference disagree on coverage in a few pixels, in every mode and
+ *  for both lights: the measured count (asserted as a ceiling) and where they are. */
+const std::map<std::string, std::pair<long long, std::string>> kKnownCoverage = {
+    {"MaxExport", {2, "two pixel centres on the silhouette of the raised arm"}},
+    {"Test3ds", {1, "one pixel centre on the ground's far edge"}},
+};
+
+/** Models whose shaded image holds NaN or Inf in every mode: the defect. */
+const std::map<std::string, std::string> kKnownNonFinite = {
+    {"Teapots", "the receiver shading gives NaN on the teapots (105,603 float channels; they render black)"},
+};
+
+std::string caseKey(const std::string& model, const std::string& mode, unsigned int light)
+{
+    return model + "/" + mode + "/" + (light == 0 ? "directional" : "point");
+}
+
+osshar::RenderOptions corpusOptions(const Model& model)
+{
+    osshar::RenderOptions o;
+    o.file = std::string(kCorpusDir) + "/" + model.path;
+    o.ground = true;
+    osshar::LightArg directional, point;
+    directional.vector = osg::Vec3d(0.5, -0.6, 0.6);
+    point.directional = false;
+    point.vector = osg::Vec3d(-3.0, -4.0, 9.0);
+    o.lights = {directional, point};
+    return o;
+}
+
+/** The reference masks of a model's two lights, ray cast once for all modes. */
+const ossref::Mask& reference(const Model& model, ShadowedRender& r, unsigned int light)
+{
+    static std::map<std::string, ossref::Mask> cache;
+    const std::string key = std::string(model.path) + "#" + std::to_string(light);
+    auto found = cache.find(key);
+    if (found == cache.end()) found = cache.emplace(key, r.reference(light)).first;
+    return found->second;
+}
+
+void PrintTo(const Model& model, std::ostream* os) { *os << model.path; }
+void PrintTo(const Mode& mode, std::ostream* os) { *os << mode.name << " " << mode.mapSize; }
+
+using Case = std::tuple<Model, Mode>;
+
+class CorpusModel : public testing::TestWithParam<Case>
+{
+};
+
+TEST_P(CorpusModel, MatchesTheReference)
+{
+    const Model& model = std::get<0>(GetParam());
+    const Mode& mode = std::get<1>(GetParam());
+    if (!osgDB::fileExists(std::string(kCorpusDir) + "/" + model.path))
+        GTEST_SKIP() << kCorpusDir << "/" << model.path
+                     << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh)";
+    osshar::GLErrorCounter& glErrors = osshar::installGLErrorCounter();
+    glErrors.reset();
+    ShadowedRender r(corpusOptions(model), mode.name, mode.mapSize, W, H);
+    ASSERT_TRUE(r.valid());
+    ASSERT_GE(r.scene.lights.size(), 2u);
+    const ossref::Mask masks[2] = {r.mask(0), r.mask(1)};
+    std::string known;
+    for (unsigned int light = 0; light < 2; ++light)
+    {
+        SCOPED_TRACE(caseKey(model.name, mode.name, light));
+        const ossref::Mask& mask = masks[light];
+        const ossref::Mask& ref = reference(model, r, light);
+        const ossref::Comparison c = ossref::compareMasks(mask, ref);
+        ASSERT_TRUE(c.valid) << c.error;
+        EXPECT_GT(c.geometryPixels, W * H / 4) << "the model and its ground should fill the view";
+        const auto coverage = kKnownCoverage.find(model.name);
+        if (coverage == kKnownCoverage.end())
+            EXPECT_EQ(c.coverageMismatch, 0) << "the mask and the reference disagree on where geometry is";
+        else
+            EXPECT_LE(c.coverageMismatch, coverage->second.first) << coverage->second.second;
+        std::printf("corpus %s wrong_pct=%.4f coverage_mismatch=%lld\n", caseKey(model.name, mode.name, light).c_str(),
+                    c.wrongPct, c.coverageMismatch);
+        const auto failure = kKnownFailures.find(caseKey(model.name, mode.name, light));
+        if (failure != kKnownFailures.end())
+            known += "; " + failure->first + ": " + failure->second + " (measured now " + std::to_string(c.wrongPct) + "%)";
+        else
+            EXPECT_LE(c.wrongPct, mode.boundPct) << "wrong pixels in % of " << c.geometryPixels;
+    }
+    // After the masks: the float frames leave the camera drawing into a new target.
+    const auto nonFinite = kKnownNonFinite.find(model.name);
+    r.technique->setDebugLight(0);
+    if (nonFinite == kKnownNonFinite.end())
+        osstest::expectFiniteImage(r, masks[0], reference(model, r, 0));
+    else
+        known += std::string("; ") + model.name + ": " + nonFinite->second;
+    EXPECT_EQ(glErrors.count(), 0) << "OpenGL errors while rendering";
+    if (!known.empty()) GTEST_SKIP() << "known failure" << known.substr(1);
+}
+
+std::string caseName(const testing::TestParamInfo<Case>& info)
+{
+    return std::string(std::get<0>(info.param).name) + "_" + std::get<1>(info.param).name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusModel, testing::Combine(testing::ValuesIn(kModels), testing::ValuesIn(kModes)),
+                         caseName);
+
+} // namespace
