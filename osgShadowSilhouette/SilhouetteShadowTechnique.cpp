@@ -1,6 +1,7 @@
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include "RenderLeaves.h"
 #include "ShaderSource.h"
 
 #include <osg/ColorMask>
@@ -57,17 +58,9 @@ enum WarningKey
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
 void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables)
 {
-    for (osgUtil::StateGraph* graph : bin.getStateGraphList())
-    {
-        auto& leaves = graph->_leaves;
-        leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
-                                    [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
-                                        return std::find(drawables.begin(), drawables.end(), leaf->getDrawable()) !=
-                                               drawables.end();
-                                    }),
-                     leaves.end());
-    }
-    for (auto& nested : bin.getRenderBinList()) removeLeaves(*nested.second, drawables);
+    detail::eraseLeaves(bin, [&](const osgUtil::RenderLeaf& leaf) {
+        return std::find(drawables.begin(), drawables.end(), leaf.getDrawable()) != drawables.end();
+    });
 }
 
 /** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
@@ -120,6 +113,8 @@ public:
         _marked = std::move(drawables);
         _markedStateSet = ss;
     }
+    /** The draws are those @p listed gives (the triangle lists: triangles only). */
+    void setListed(ListedDrawables* listed) { _listed = listed; }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
         if (_scene && _casters)
@@ -129,6 +124,7 @@ public:
             if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
             if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
                 moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
+            if (cv && _listed && cv->getCurrentRenderBin()) _listed->apply(*cv->getCurrentRenderBin());
         }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
@@ -139,6 +135,7 @@ private:
     std::vector<const osg::Drawable*> _excluded;
     std::unordered_set<const osg::Drawable*> _marked;
     osg::ref_ptr<osg::StateSet> _markedStateSet;
+    osg::ref_ptr<ListedDrawables> _listed;
 };
 
 /** World bounds of the drawables under the traversal mask, leaving out (and listing) the
@@ -635,6 +632,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
     if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->resizeGLObjectBuffers(maxSize);
     if (_litRawDepthTexture) _litRawDepthTexture->resizeGLObjectBuffers(maxSize);
+    _listedDrawables->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _viewDataMap)
     {
         ViewData& vd = *entry.second;
@@ -661,6 +659,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
     if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->releaseGLObjects(state);
     if (_litRawDepthTexture) _litRawDepthTexture->releaseGLObjects(state);
+    _listedDrawables->releaseGLObjects(state);
     for (const auto& entry : _viewDataMap)
     {
         const ViewData& vd = *entry.second;
@@ -1187,7 +1186,9 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
                                              "osgShadowSilhouette triangle lists " + std::to_string(slot),
                                              grow ? neededNodes : 0);
-        pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+        auto* scene = new TraverseShadowedSceneCallback(_shadowedScene);
+        scene->setListed(_listedDrawables.get());
+        pass.listPass->getCamera()->setCullCallback(scene);
         pass.listRendered = PassInputs();
     }
     const bool sameReceivers = pass.listReceivers._min == frame.receivers._min &&
