@@ -33,6 +33,13 @@ namespace {
 
 constexpr unsigned int MAX_MAP_SIZE = 16384;
 
+/** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
+ *  win over the model's state on the same units: a model's texture on a map's unit would
+ *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
+ *  none of the model's units there; a program of the model's own that does needs another
+ *  BaseTextureUnit. */
+constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+
 std::atomic<bool>& emptyFaceSkipping()
 {
     static std::atomic<bool> skip{true};
@@ -718,7 +725,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         // them: the elements after those are never read (a valid unit all the same).
         silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
-        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), osg::StateAttribute::ON);
+        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), EYE_PASS_BINDING);
     }
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
     {
@@ -888,7 +895,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
             vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                             osg::StateAttribute::ON);
+                                                             EYE_PASS_BINDING);
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
@@ -1066,8 +1073,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
         if (queries) pass.depthCamera->addChild(queries);
     }
     cullLightPasses(cv, pass, frame, light, stats);
-    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
-                                                     osg::StateAttribute::ON);
+    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), EYE_PASS_BINDING);
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
@@ -1218,13 +1224,15 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
     if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
         ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
-                                                                    pass.listPass->getBufferSize()));
+                                                                    pass.listPass->getBufferSize()),
+                                EYE_PASS_BINDING);
     // The same buffer as a read-only image, for eye passes that read images (OSS_LIST_IMAGES).
     const unsigned int unit = shader::LIST_READ_IMAGE_UNIT + slot;
     auto* image = dynamic_cast<osg::BindImageTexture*>(ss.getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit));
     if (!image || image->getTexture() != pass.listPass->getImageView())
         ss.setAttributeAndModes(new osg::BindImageTexture(unit, pass.listPass->getImageView(),
-                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT));
+                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT),
+                                EYE_PASS_BINDING);
     vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity(),
                                 pass.listPass->getGridSize(), 0u);
     vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
@@ -1407,7 +1415,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
         else
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
-                                           osg::StateAttribute::ON);
+                                           EYE_PASS_BINDING);
     }
 }
 
