@@ -2,6 +2,7 @@
 #include <osgShadowSilhouette/PropertyRanges>
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include "RenderLeaves.h"
 #include "ShaderSource.h"
 
 #include <osg/ColorMask>
@@ -32,6 +33,13 @@ namespace osgShadowSilhouette {
 namespace {
 
 constexpr unsigned int MAX_MAP_SIZE = 16384;
+
+/** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
+ *  win over the model's state on the same units: a model's texture on a map's unit would
+ *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
+ *  none of the model's units there; a program of the model's own that does needs another
+ *  BaseTextureUnit. */
+constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
 
 std::atomic<bool>& emptyFaceSkipping()
 {
@@ -76,17 +84,9 @@ enum WarningKey
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
 void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables)
 {
-    for (osgUtil::StateGraph* graph : bin.getStateGraphList())
-    {
-        auto& leaves = graph->_leaves;
-        leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
-                                    [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
-                                        return std::find(drawables.begin(), drawables.end(), leaf->getDrawable()) !=
-                                               drawables.end();
-                                    }),
-                     leaves.end());
-    }
-    for (auto& nested : bin.getRenderBinList()) removeLeaves(*nested.second, drawables);
+    detail::eraseLeaves(bin, [&](const osgUtil::RenderLeaf& leaf) {
+        return std::find(drawables.begin(), drawables.end(), leaf.getDrawable()) != drawables.end();
+    });
 }
 
 /** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
@@ -139,6 +139,8 @@ public:
         _marked = std::move(drawables);
         _markedStateSet = ss;
     }
+    /** The draws are those @p listed gives (the triangle lists: triangles only). */
+    void setListed(ListedDrawables* listed) { _listed = listed; }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
         if (_scene && _casters)
@@ -148,6 +150,7 @@ public:
             if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
             if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
                 moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
+            if (cv && _listed && cv->getCurrentRenderBin()) _listed->apply(*cv->getCurrentRenderBin());
         }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
@@ -158,6 +161,7 @@ private:
     std::vector<const osg::Drawable*> _excluded;
     std::unordered_set<const osg::Drawable*> _marked;
     osg::ref_ptr<osg::StateSet> _markedStateSet;
+    osg::ref_ptr<ListedDrawables> _listed;
 };
 
 /** World bounds of the drawables under the traversal mask, leaving out (and listing) the
@@ -640,6 +644,7 @@ void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
     if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->resizeGLObjectBuffers(maxSize);
     if (_litRawDepthTexture) _litRawDepthTexture->resizeGLObjectBuffers(maxSize);
+    _listedDrawables->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _viewDataMap)
     {
         ViewData& vd = *entry.second;
@@ -666,6 +671,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
     if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->releaseGLObjects(state);
     if (_litRawDepthTexture) _litRawDepthTexture->releaseGLObjects(state);
+    _listedDrawables->releaseGLObjects(state);
     for (const auto& entry : _viewDataMap)
     {
         const ViewData& vd = *entry.second;
@@ -724,7 +730,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         // them: the elements after those are never read (a valid unit all the same).
         silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
-        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), osg::StateAttribute::ON);
+        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), EYE_PASS_BINDING);
     }
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
     {
@@ -895,7 +901,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
             vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                             osg::StateAttribute::ON);
+                                                             EYE_PASS_BINDING);
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
@@ -1089,8 +1095,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
         if (queries) pass.depthCamera->addChild(queries);
     }
     cullLightPasses(cv, pass, frame, light, stats);
-    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(),
-                                                     osg::StateAttribute::ON);
+    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), EYE_PASS_BINDING);
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
@@ -1209,7 +1214,9 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
                                              "osgShadowSilhouette triangle lists " + std::to_string(slot),
                                              grow ? neededNodes : 0);
-        pass.listPass->getCamera()->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
+        auto* scene = new TraverseShadowedSceneCallback(_shadowedScene);
+        scene->setListed(_listedDrawables.get());
+        pass.listPass->getCamera()->setCullCallback(scene);
         pass.listRendered = PassInputs();
     }
     const bool sameReceivers = pass.listReceivers._min == frame.receivers._min &&
@@ -1239,13 +1246,15 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
     if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
         ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
-                                                                    pass.listPass->getBufferSize()));
+                                                                    pass.listPass->getBufferSize()),
+                                EYE_PASS_BINDING);
     // The same buffer as a read-only image, for eye passes that read images (OSS_LIST_IMAGES).
     const unsigned int unit = shader::LIST_READ_IMAGE_UNIT + slot;
     auto* image = dynamic_cast<osg::BindImageTexture*>(ss.getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit));
     if (!image || image->getTexture() != pass.listPass->getImageView())
         ss.setAttributeAndModes(new osg::BindImageTexture(unit, pass.listPass->getImageView(),
-                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT));
+                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT),
+                                EYE_PASS_BINDING);
     vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity(),
                                 pass.listPass->getGridSize(), 0u);
     vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
@@ -1428,7 +1437,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
         else
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
-                                           osg::StateAttribute::ON);
+                                           EYE_PASS_BINDING);
     }
 }
 

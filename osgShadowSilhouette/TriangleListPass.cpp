@@ -1,6 +1,7 @@
 #include <osgShadowSilhouette/TriangleListPass>
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include "RenderLeaves.h"
 #include "ShaderSource.h"
 
 #include <osg/ColorMask>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <OpenThreads/ScopedLock>
 #include <osg/Geode>
+#include <osg/TriangleIndexFunctor>
 #include <algorithm>
 #include <atomic>
 #include <map>
@@ -515,6 +517,124 @@ void TriangleListPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustu
     _receiverSlack->set(box ? float(1e-5 * 2.0 * receivers.radius()) : 0.0f);
     ++_readback->culled;
     _camera->accept(cv);
+}
+
+// ---------------------------------------------------------------------------------------
+// ListedDrawables
+
+namespace {
+
+/** Collects the triangles a primitive set's faces split into, in their winding. */
+struct TriangleIndexSink
+{
+    osg::DrawElementsUInt* out = nullptr;
+    void operator()(unsigned int a, unsigned int b, unsigned int c)
+    {
+        out->push_back(a);
+        out->push_back(b);
+        out->push_back(c);
+    }
+};
+
+} // namespace
+
+bool ListedDrawables::isTriangleMode(GLenum mode)
+{
+    return mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN;
+}
+
+osg::Drawable* ListedDrawables::get(osg::Drawable& drawable)
+{
+    osg::Geometry* geometry = drawable.asGeometry();
+    if (!geometry) return nullptr;
+    const osg::Geometry::PrimitiveSetList& sets = geometry->getPrimitiveSetList();
+    if (std::all_of(sets.begin(), sets.end(), [](const osg::ref_ptr<osg::PrimitiveSet>& p) {
+            return !p || isTriangleMode(p->getMode());
+        }))
+        return geometry;
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    auto found = _standIns.find(geometry);
+    if (found != _standIns.end() && isCurrent(found->second, *geometry)) return found->second.geometry.get();
+    prune();
+    StandIn& standIn = _standIns[geometry];
+    standIn = makeStandIn(*geometry);
+    return standIn.geometry.get();
+}
+
+void ListedDrawables::apply(osgUtil::RenderBin& bin)
+{
+    detail::eraseLeaves(bin, [this](osgUtil::RenderLeaf& leaf) {
+        if (leaf._drawable) leaf._drawable = get(*leaf._drawable);
+        return !leaf._drawable;
+    });
+}
+
+std::size_t ListedDrawables::size() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    return _standIns.size();
+}
+
+bool ListedDrawables::isCurrent(const StandIn& standIn, const osg::Geometry& source)
+{
+    const osg::Geometry::PrimitiveSetList& sets = source.getPrimitiveSetList();
+    if (standIn.source.get() != &source || standIn.vertices != source.getVertexArray() ||
+        standIn.primitives.size() != sets.size())
+        return false;
+    for (std::size_t i = 0; i < sets.size(); ++i)
+        if (standIn.primitives[i].first != sets[i].get() ||
+            (sets[i] && standIn.primitives[i].second != sets[i]->getModifiedCount()))
+            return false;
+    return true;
+}
+
+ListedDrawables::StandIn ListedDrawables::makeStandIn(osg::Geometry& source)
+{
+    StandIn standIn;
+    standIn.source = &source;
+    standIn.vertices = source.getVertexArray();
+    osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
+    geometry->setName(source.getName() + " (list pass triangles)");
+    geometry->setUseDisplayList(false);
+    // As the source draws: a stand-in with buffer objects would attach them to the source's
+    // array and primitive sets, which it draws without.
+    geometry->setUseVertexBufferObjects(source.getUseVertexBufferObjects());
+    geometry->setVertexArray(source.getVertexArray());
+    osg::ref_ptr<osg::DrawElementsUInt> faces = new osg::DrawElementsUInt(GL_TRIANGLES);
+    osg::TriangleIndexFunctor<TriangleIndexSink> split;
+    split.out = faces.get();
+    for (const osg::ref_ptr<osg::PrimitiveSet>& primitives : source.getPrimitiveSetList())
+    {
+        standIn.primitives.emplace_back(primitives.get(), primitives ? primitives->getModifiedCount() : 0u);
+        if (!primitives) continue;
+        if (isTriangleMode(primitives->getMode()))
+            geometry->addPrimitiveSet(primitives.get());
+        else
+            primitives->accept(split); // quads and polygons split; lines and points give nothing
+    }
+    if (!faces->empty()) geometry->addPrimitiveSet(faces.get());
+    if (standIn.vertices && geometry->getNumPrimitiveSets() > 0) standIn.geometry = geometry;
+    return standIn;
+}
+
+void ListedDrawables::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (auto& entry : _standIns)
+        if (entry.second.geometry) entry.second.geometry->resizeGLObjectBuffers(maxSize);
+}
+
+void ListedDrawables::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (const auto& entry : _standIns)
+        if (entry.second.geometry) entry.second.geometry->releaseGLObjects(state);
+}
+
+void ListedDrawables::prune()
+{
+    for (auto it = _standIns.begin(); it != _standIns.end();)
+        it = it->second.source.valid() ? std::next(it) : _standIns.erase(it);
 }
 
 void TriangleListPass::resizeGLObjectBuffers(unsigned int maxSize)

@@ -34,9 +34,23 @@ struct ShadowedRender
                    int height)
     {
         std::string error;
-        if (!osshar::prepareScene(options, scene, error) ||
-            !osshar::makeShadowedRoot(mode, mapSize, scene, root, technique, error))
+        if (!osshar::prepareScene(options, scene, error))
             ADD_FAILURE() << error;
+        else
+            start(mode, mapSize, width, height);
+    }
+
+    /** A scene built in the test (its content, lights and view), as prepareScene() gives one. */
+    ShadowedRender(osshar::PreparedScene prepared, const std::string& mode, unsigned int mapSize, int width, int height)
+        : scene(std::move(prepared))
+    {
+        start(mode, mapSize, width, height);
+    }
+
+    void start(const std::string& mode, unsigned int mapSize, int width, int height)
+    {
+        std::string error;
+        if (!osshar::makeShadowedRoot(mode, mapSize, scene, root, technique, error)) ADD_FAILURE() << error;
         renderer.reset(new osshar::Renderer(width, height, true));
         if (!renderer->valid())
         {
