@@ -57,7 +57,11 @@ void main()
     oss_texCoord0 = gl_TextureMatrix[0] * gl_MultiTexCoord0;
     gl_Position = ftransform();
 
-    vec3 N = normalize(gl_NormalMatrix * gl_Normal);
+    // A zero or non-finite normal (models carry them) lights nothing directly, as in the
+    // fixed function, instead of spreading NaN through the shading.
+    vec3 n = gl_NormalMatrix * gl_Normal;
+    float nLength = length(n);
+    vec3 N = nLength > 0.0 && nLength < 1e30 ? n / nLength : vec3(0.0);
     vec4 ambientColor = gl_FrontMaterial.ambient * gl_Color;
     vec4 diffuseColor = gl_FrontMaterial.diffuse * gl_Color;
     vec3 color = gl_FrontMaterial.emission.rgb + (gl_LightModel.ambient * ambientColor).rgb;

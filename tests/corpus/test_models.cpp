@@ -84,7 +84,6 @@ const std::map<std::string, std::pair<long long, std::string>> kKnownCoverage = 
 
 /** Models whose shaded image holds NaN or Inf in every mode: the defect. */
 const std::map<std::string, std::string> kKnownNonFinite = {
-    {"Teapots", "the receiver shading gives NaN on the teapots (105,603 float channels; they render black)"},
 };
 
 std::string caseKey(const std::string& model, const std::string& mode, unsigned int light)
