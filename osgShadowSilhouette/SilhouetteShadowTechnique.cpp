@@ -409,7 +409,7 @@ void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
 float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode) const
 {
     if (_polygonOffsetFactor >= 0.0f) return _polygonOffsetFactor;
-    return mode == HYBRID && _hybridEdgeMask ? 2.0f : 1.1f;
+    return mode == HYBRID ? 0.0f : 1.1f;
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
@@ -748,12 +748,15 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->listPerspective->setElement(slot, 0);
     }
     vd->listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    vd->lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
                             vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
-                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get()})
+                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(),
+                            vd->lookupBiasFrame.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
+    ss->addUniform(new osg::Uniform(shader::LOOKUP_BIAS_PER_DISTANCE, shader::LOOKUP_BIAS));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
     vd->passes.resize(slots);
     vd->slotInUse.assign(slots, false);
@@ -873,6 +876,10 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.receiverStateSet->setDefine(shader::DEFINE_TRIANGLE_LISTS);
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_TRIANGLE_LISTS);
+    if (frame.mode == HYBRID)
+        vd.receiverStateSet->setDefine(shader::DEFINE_BIAS_BAND);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_BIAS_BAND);
     if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
     if (stencilMode)
         vd.receiverPassStateSet->setAttributeAndModes(_stencilProgram.get(),
@@ -1592,7 +1599,8 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_CUBE_FACES);
     vd.maskLight->set(static_cast<int>(_debugLight));
-    // The exact test's ray offset scales with the shadowed scene's bound, in eye space.
+    // The exact test's ray offset and the lookups' depth bias scale with the shadowed scene's
+    // bound, in eye space.
     const osg::BoundingSphere& bound = _shadowedScene ? _shadowedScene->getBound() : osg::BoundingSphere();
     if (bound.valid())
     {
@@ -1600,9 +1608,13 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
         const osg::Vec3d centre = bound.center() * worldToEye;
         const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
         vd.listRayFrame->set(osg::Vec4f(centre, float(double(_shadowRayOffset) * bound.radius() * scale)));
+        vd.lookupBiasFrame->set(osg::Vec4f(centre, float(double(shader::LOOKUP_BIAS) * bound.radius() * scale)));
     }
     else
+    {
         vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+        vd.lookupBiasFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    }
 }
 
 } // namespace osgShadowSilhouette

@@ -9,7 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
@@ -45,11 +45,77 @@ float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk);
 bool oss_listResolves(int s, float pcf, vec4 eyePosition);
 #endif
 
+uniform vec4 oss_lookupBiasFrame;        // eye-space centre of the shadowed scene's bound, the bias there
+uniform float oss_lookupBiasPerDistance; // the bias per unit of distance from that centre
+
+// The lookups' depth bias (docs/bias.md) at eye-space position p whose light clip-space
+// position is c = eyeToShadow * p, in the map's [0,1] depth: a world-space distance (a share
+// of the scene's radius, growing with the distance from its centre) times the gradient of
+// the map's depth at p. The depth pass's constant offset is one step of the 24-bit depth;
+// the rounding of positions is a share of their magnitude, which a perspective map's depth
+// (changing as 1/w^2) magnifies near its near plane and an orthographic one not at all.
+float oss_lookupBias(mat4 eyeToShadow, vec4 c, vec4 p)
+{
+    vec3 dz = vec3(eyeToShadow[0][2], eyeToShadow[1][2], eyeToShadow[2][2]);
+    vec3 dw = vec3(eyeToShadow[0][3], eyeToShadow[1][3], eyeToShadow[2][3]);
+    vec3 gradient = (dz * c.w - dw * c.z) / (c.w * c.w); // of c.z / c.w, per eye-space unit
+    float world = oss_lookupBiasFrame.w + oss_lookupBiasPerDistance * length(p.xyz / p.w - oss_lookupBiasFrame.xyz);
+    return world * length(gradient);
+}
+
+// The receiver's depth slope in light texture space (receiver plane depth bias, Isidoro
+// 2006), from screen-space derivatives: taken in uniform control flow, before any branch.
+vec2 oss_depthSlope(vec3 coord)
+{
+    vec3 dx = dFdx(coord), dy = dFdy(coord);
+    float det = dx.x * dy.y - dx.y * dy.x;
+    if (det == 0.0)
+        return vec2(0.0);
+    return vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+}
+
+#ifdef OSS_BIAS_BAND
+// HYBRID's lookup (the depth pass has no slope-scaled offset here, so that a caster just in
+// front of a receiver keeps its depth): each of the four depth samples is compared with the
+// receiver's plane extended to it, less the lookup bias. A sample that lies in front of that
+// plane by less than OSS_CURVATURE_BAND of the plane's depth rise over a texel may be the
+// receiver itself, curved or creased, or a caster touching it: the map cannot tell, and the
+// PCF is moved strictly between 0 and 1 so that the exact test resolves the pixel.
+const float OSS_CURVATURE_BAND = 1.0;
+
+float oss_planePcf(sampler2DShadow map, vec3 t, vec2 slope, float bias)
+{
+    vec2 size = vec2(textureSize(map, 0));
+    vec2 u = t.xy * size - 0.5;
+    vec2 f = u - floor(u);
+    vec2 at = (floor(u) + 1.0) / size; // the middle of the four samples: textureGather's footprint
+    vec4 dx = (vec4(0.0, 1.0, 1.0, 0.0) - f.x) / size.x; // NW, NE, SE, SW as textureGather
+    vec4 dy = (vec4(1.0, 1.0, 0.0, 0.0) - f.y) / size.y;
+    vec4 plane = t.z + dx * slope.x + dy * slope.y - bias;
+    vec4 lit = vec4(textureGather(map, at, plane.x).x, textureGather(map, at, plane.y).y,
+                    textureGather(map, at, plane.z).z, textureGather(map, at, plane.w).w);
+    float band = OSS_CURVATURE_BAND * (abs(slope.x) / size.x + abs(slope.y) / size.y);
+    vec4 near = textureGather(map, at, min(min(plane.x, plane.y), min(plane.z, plane.w)) - band);
+    float pcf = dot(lit, vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y)));
+    return any(lessThan(lit, near)) ? clamp(pcf, 1.0 / 64.0, 63.0 / 64.0) : pcf;
+}
+#endif
+
 // 2x2 PCF of one depth map at an eye-space position: 1 lit, 0 shadowed, between at edges.
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
 {
     vec4 c = eyeToShadow * eyePosition;
-    return c.w <= 0.0 ? 1.0 : textureProj(map, c); // behind a perspective light: outside its map
+    vec3 t = c.xyz / c.w;
+#ifdef OSS_BIAS_BAND
+    vec2 slope = oss_depthSlope(t);
+#endif
+    if (c.w <= 0.0) return 1.0; // behind a perspective light: outside its map
+    float bias = oss_lookupBias(eyeToShadow, c, eyePosition);
+#ifdef OSS_BIAS_BAND
+    return oss_planePcf(map, t, slope, bias);
+#else
+    return texture(map, vec3(t.xy, t.z - bias));
+#endif
 }
 
 #define OSS_PCF_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)

@@ -28,20 +28,13 @@ struct oss_SilhouetteSample
     vec2 local;    // position in that texel, [0, 1]^2
     vec4 depths;   // depth samples at its corners as textureGather returns them: NW, NE, SE, SW
     vec4 lit;      // their depth tests (GL_LEQUAL: 1 where the sample is not behind), same order
-    vec3 coord;    // light texture coordinates and depth
+    vec3 coord;    // light texture coordinates and depth, less the lookup bias
     vec2 depthSlope; // d depth / d texture coordinate of the receiver's plane
 };
 
-// The receiver's depth slope in light texture space (receiver plane depth bias, Isidoro
-// 2006), from screen-space derivatives: taken in uniform control flow, before any branch.
-vec2 oss_depthSlope(vec3 coord)
-{
-    vec3 dx = dFdx(coord), dy = dFdy(coord);
-    float det = dx.x * dy.y - dx.y * dy.x;
-    if (det == 0.0)
-        return vec2(0.0);
-    return vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
-}
+vec2 oss_depthSlope(vec3 coord); // oss_shadow.frag.glsl
+
+float oss_lookupBias(mat4 eyeToShadow, vec4 c, vec4 p); // oss_shadow.frag.glsl
 
 // False for points behind a perspective light (outside its map: lit).
 bool oss_silhouetteSample(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition, out oss_SilhouetteSample s)
@@ -49,6 +42,7 @@ bool oss_silhouetteSample(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition
     vec4 c = eyeToShadow * eyePosition;
     vec3 t = c.xyz / c.w;
     s.depthSlope = oss_depthSlope(t);
+    t.z -= oss_lookupBias(eyeToShadow, c, eyePosition);
     s.coord = t;
     s.texel = ivec2(0);
     s.local = vec2(0.5);

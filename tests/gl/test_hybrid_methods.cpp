@@ -276,7 +276,7 @@ TEST_P(HybridEdgeMaskOutline, LeavesACastersOwnOutlineToTheMap)
     ShadowedRender r(c.scene, "hybrid", 1024, 512, 384);
     ASSERT_TRUE(r.valid());
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
-    r.technique->setPolygonOffsetFactor(2.0f); // the automatic factor with the mask, for both renders
+    r.technique->setPolygonOffsetFactor(2.0f); // a slope offset covering the PCF footprint, for both renders
     r.renderer->timeFrames(0, 2);
     const osshar::ClassCounts with = osshar::countClasses(*osshar::renderClasses(*r.renderer, *r.technique, 0));
     r.technique->setHybridEdgeMask(false);
