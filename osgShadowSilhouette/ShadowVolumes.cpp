@@ -162,8 +162,10 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
 
     osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
     const osg::BoundingBox box = e.caster.geometry->getBoundingBox();
-    e.zfail = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
-    e.zfail->addPrimitiveSet(drawRange(e.volume, e.volume.darkCap).get());
+    osg::ref_ptr<osg::DrawElementsUInt> sidesAndDarkCap = drawRange(e.volume, e.volume.sides);
+    osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
+    sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
+    e.zfail = volumeGeometry(vertices.get(), sidesAndDarkCap.get(), box);
     e.lightCap = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.lightCap).get(), box);
     e.lightCap->setStateSet(_lightCapState.get());
     e.zpass = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
