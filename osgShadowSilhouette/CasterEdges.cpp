@@ -36,7 +36,7 @@ void CasterCollector::apply(osg::Geometry& geometry)
     if (!mesh || mesh->getAdjacency().empty()) return;
     Caster caster;
     caster.geometry = &geometry;
-    caster.closed = mesh->getAdjacency().isClosed();
+    caster.closed = mesh->getAdjacency().isClosedOutward();
     caster.mesh = mesh;
     caster.world = _matrices.back();
     _casters.push_back(caster);

@@ -302,6 +302,38 @@ void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
     adjacency.edgeVertices.shrink_to_fit();
 }
 
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t f)
+{
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+}
+
+/** Connected parts (faces joined by interior edges) whose signed enclosed volume is
+ *  negative; each part's volume is summed about its own first vertex, in double. */
+std::size_t countInwardParts(const MeshAdjacency& m)
+{
+    std::vector<std::uint32_t> parent(m.faces.size());
+    for (std::uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
+    for (const EdgeFaces& e : m.edgeFaces) parent[findRoot(parent, e.face0)] = findRoot(parent, e.face1);
+    std::vector<double> volume(m.faces.size(), 0.0);
+    std::vector<osg::Vec3d> origin(m.faces.size());
+    std::vector<char> seen(m.faces.size(), 0);
+    for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+    {
+        const std::uint32_t r = findRoot(parent, f);
+        const MeshTriangle& t = m.faces[f];
+        if (!seen[r]) origin[r] = osg::Vec3d(m.positions[t.v[0]]);
+        seen[r] = 1;
+        const osg::Vec3d a = osg::Vec3d(m.positions[t.v[0]]) - origin[r], b = osg::Vec3d(m.positions[t.v[1]]) - origin[r],
+                         c = osg::Vec3d(m.positions[t.v[2]]) - origin[r];
+        volume[r] += a * (b ^ c);
+    }
+    std::size_t inward = 0;
+    for (std::uint32_t f = 0; f < volume.size(); ++f)
+        if (seen[f] && findRoot(parent, f) == f && volume[f] < 0.0) ++inward;
+    return inward;
+}
+
 void warnAboutInput(const std::string& name, const MeshBuildReport& report)
 {
     if (report.nonFiniteVertices > 0)
@@ -361,6 +393,7 @@ void buildMeshAdjacency(const TriangleSoup& soup, const MeshBuildOptions& option
     fillHalfEdgeMesh(welded, mesh, report);
     flattenFaces(mesh, adjacency);
     flattenEdges(mesh, adjacency);
+    if (adjacency.isClosed()) adjacency.inwardParts = countInwardParts(adjacency);
     std::size_t firstRefused = mesh.n_faces() - report.nonManifoldFaces;
     for (std::size_t f = firstRefused; f < mesh.n_faces(); ++f)
         adjacency.nonManifoldFaces.push_back(static_cast<std::uint32_t>(f));

@@ -14,6 +14,9 @@ namespace osgShadowSilhouette {
 
 namespace {
 
+/** Polygon offset factor of the light cap (in units of the cap's own depth slope per pixel). */
+constexpr float LIGHT_CAP_SLOPE_OFFSET = 1.0f;
+
 /** Bounds of a volume's geometry: the caster's own box (its vertices at infinity have none). */
 class CasterBoundCallback : public osg::Drawable::ComputeBoundingBoxCallback
 {
@@ -57,6 +60,28 @@ osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawEl
     return g;
 }
 
+osg::ref_ptr<osg::DrawElementsUInt> drawRange(const ShadowVolume& volume, const IndexRange& range)
+{
+    const auto first = volume.indices.begin() + range.first;
+    return new osg::DrawElementsUInt(GL_TRIANGLES, first, first + range.count);
+}
+
+/** The light cap lies on its caster's faces, which the eye pass has drawn already, but
+ *  not from the same triangles: its corners come in another order (OpenMesh starts a face
+ *  where it likes, a strip's odd triangles and the faces a TWO_SIDED rule turns are
+ *  reversed), so the rasterizer's depth plane is set up from another vertex and its depths
+ *  differ from the surface's in the last bits, by an amount that grows with the depth slope
+ *  (llvmpipe: whole triangles of false shadow on faces seen edge-on). So the cap, and only
+ *  the cap, is pushed back by its slope as well: the sides and the dark cap keep the
+ *  one-unit offset, since a slope term there would move the shadow's outline on receivers. */
+osg::ref_ptr<osg::StateSet> lightCapState()
+{
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    ss->setAttributeAndModes(new osg::PolygonOffset(LIGHT_CAP_SLOPE_OFFSET, 1.0f), on);
+    return ss;
+}
+
 } // namespace
 
 bool needsZFail(const osg::BoundingSphered& caster, const osg::Vec4d& light, const osg::Vec3d& eye, double nearRadius)
@@ -92,6 +117,7 @@ ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask
     _root->setCullingActive(false);
     _zfailState = stencilState(true, testRef, testMask, writeMask);
     _zpassState = stencilState(false, testRef, testMask, writeMask);
+    _lightCapState = lightCapState();
 }
 
 ShadowVolumeGroup::~ShadowVolumeGroup() = default;
@@ -135,17 +161,17 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     _extractor.buildVolume(mesh, HomogeneousLight{light}, e.caster.world, e.silhouette, e.volume);
 
     osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
-    osg::ref_ptr<osg::DrawElementsUInt> all =
-        new osg::DrawElementsUInt(GL_TRIANGLES, e.volume.indices.begin(), e.volume.indices.end());
-    const auto sidesBegin = e.volume.indices.begin() + e.volume.sides.first;
-    osg::ref_ptr<osg::DrawElementsUInt> sides =
-        new osg::DrawElementsUInt(GL_TRIANGLES, sidesBegin, sidesBegin + e.volume.sides.count);
-
     const osg::BoundingBox box = e.caster.geometry->getBoundingBox();
-    e.zfail = volumeGeometry(vertices.get(), all.get(), box);
-    e.zpass = volumeGeometry(vertices.get(), sides.get(), box);
+    osg::ref_ptr<osg::DrawElementsUInt> sidesAndDarkCap = drawRange(e.volume, e.volume.sides);
+    osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
+    sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
+    e.zfail = volumeGeometry(vertices.get(), sidesAndDarkCap.get(), box);
+    e.lightCap = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.lightCap).get(), box);
+    e.lightCap->setStateSet(_lightCapState.get());
+    e.zpass = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
     osg::ref_ptr<osg::Geode> failGeode = new osg::Geode, passGeode = new osg::Geode;
     failGeode->addDrawable(e.zfail.get());
+    failGeode->addDrawable(e.lightCap.get());
     passGeode->addDrawable(e.zpass.get());
     failGeode->setStateSet(_zfailState.get());
     passGeode->setStateSet(_zpassState.get());
@@ -209,6 +235,7 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
         }
         if (e.zfail->getDrawCallback() != e.conditional.get()) e.zfail->setDrawCallback(e.conditional.get());
         if (e.zpass->getDrawCallback() != e.conditional.get()) e.zpass->setDrawCallback(e.conditional.get());
+        if (e.lightCap->getDrawCallback() != e.conditional.get()) e.lightCap->setDrawCallback(e.conditional.get());
         const bool drawn = applyScissor(e, receivers, worldToClip, viewport);
         e.transform->setNodeMask(drawn ? ~0u : 0u);
         if (!drawn)

@@ -227,7 +227,7 @@ void SilhouetteExtractor::extract(const MeshAdjacency& mesh, const osg::Vec4d& o
                                   SilhouetteEdges& out) const
 {
     out.objectLight = objectLight;
-    out.closedCaster = mesh.isClosed();
+    out.closedCaster = mesh.isClosedOutward();
     out.rule = _openCasterRule;
     out.vertexIndices.clear();
     out.multiplicity.clear();

@@ -1,5 +1,6 @@
 // Silhouette extraction and shadow-volume geometry: hand-derived cases and invariants.
 #include "test_mesh_shapes.h"
+#include "test_soups.h"
 
 #include <osgShadowSilhouette/SilhouetteExtractor>
 
@@ -445,3 +446,71 @@ TEST(RealMesh, ScannedBunnyGivesClosedLoopsAndAWatertightVolume)
 }
 
 }
+
+// ----- triangle soups ------------------------------------------------------------------------
+// Whatever the soup, the count z-fail takes at a point (the winding number of the volume) is
+// never negative and is zero exactly where no face of the soup lies between the point and
+// the light, so that counts of several casters add up without cancelling. Where the soup
+// casts with the two-sided rule the count is the number of faces crossed.
+
+namespace {
+
+struct SoupCase
+{
+    const char* name;
+    std::function<std::vector<souptest::Triangle>()> soup;
+    bool classic; // cast with the classic rule (closed and wound outward)
+};
+
+void PrintTo(const SoupCase& c, std::ostream* os) { *os << c.name; }
+
+const std::vector<osg::Vec4d> kSoupLights = {
+    {0.3, 0.2, 1, 0}, {1, -0.5, 0.3, 0}, {-0.2, 0.1, -1, 0}, {0.5, 0.4, 4, 1}, {0.1, 0.2, 0.3, 1}};
+
+class SoupCount : public ::testing::TestWithParam<SoupCase>
+{
+};
+
+} // namespace
+
+TEST_P(SoupCount, IsZeroExactlyWhereNoFaceIsBetweenPointAndLight)
+{
+    const MeshAdjacency mesh = adjacencyOf(*souptest::soupGeometry(GetParam().soup(), GetParam().name));
+    EXPECT_EQ(GetParam().classic, mesh.isClosedOutward());
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-2.5, 2.5);
+    for (const osg::Vec4d& light : kSoupLights)
+    {
+        SilhouetteExtractor extractor;
+        SilhouetteEdges silhouette;
+        ShadowVolume volume;
+        extractor.extract(mesh, light, silhouette);
+        extractor.buildVolume(mesh, silhouette, volume);
+        EXPECT_TRUE(volumeIsEdgeBalanced(volume));
+        for (int i = 0; i < 80; ++i)
+        {
+            const osg::Vec3d p(coordinate(random), coordinate(random), coordinate(random));
+            const double count = windingNumber(volume, p);
+            const int crossed = castingFacesBetween(mesh, silhouette.lit, light, p, true);
+            const std::string where = "light (" + std::to_string(light.x()) + ", " + std::to_string(light.y()) + ", " +
+                                      std::to_string(light.z()) + ", " + std::to_string(light.w()) + ") at (" +
+                                      std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
+                                      std::to_string(p.z()) + ")";
+            EXPECT_GT(count, -1e-6) << where;
+            EXPECT_EQ(crossed > 0, count > 0.5) << where << ": count " << count << ", faces crossed " << crossed;
+            if (!GetParam().classic) EXPECT_NEAR(double(crossed), count, 1e-6) << where;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Soups, SoupCount,
+    ::testing::Values(SoupCase{"three_faces_on_an_edge", souptest::threeFacesOnAnEdge, false},
+                      SoupCase{"back_to_back_quads", souptest::backToBackQuads, false},
+                      SoupCase{"box_with_a_flipped_face", souptest::boxWithAFlippedFace, false},
+                      SoupCase{"open_box", [] { return souptest::box({-1, -1, -1}, {1, 1, 1}, 1); }, false},
+                      SoupCase{"t_junction", souptest::tJunction, false},
+                      SoupCase{"two_touching_boxes", souptest::twoTouchingBoxes, false},
+                      SoupCase{"inward_box", [] { return souptest::flipped(souptest::box({-1, -1, -1}, {1, 1, 1})); }, false},
+                      SoupCase{"room_with_a_box", souptest::roomWithABox, false}),
+    [](const ::testing::TestParamInfo<SoupCase>& info) { return std::string(info.param.name); });

@@ -1,5 +1,6 @@
 // osg::Geometry -> welded OpenMesh mesh -> flat adjacency arrays.
 #include "test_mesh_shapes.h"
+#include "test_soups.h"
 
 #include <osgShadowSilhouette/HalfEdgeMesh>
 #include <osgShadowSilhouette/MeshAdjacency>
@@ -378,6 +379,32 @@ TEST(BadInput, OutOfRangeIndicesAndMissingVerticesAreHarmless)
     MeshAdjacency none = adjacencyOf(*empty);
     EXPECT_TRUE(none.empty());
     EXPECT_TRUE(none.isClosed());
+}
+
+
+// A closed part wound inward (a room seen from within) must not cast with the classic rule.
+TEST(MeshAdjacency, CountsClosedPartsWoundInward)
+{
+    using namespace souptest;
+    MeshAdjacency outward = adjacencyOf(*soupGeometry(box({-1, -1, -1}, {1, 1, 1}), "box"));
+    EXPECT_TRUE(outward.isClosed());
+    EXPECT_EQ(0u, outward.inwardParts);
+    EXPECT_TRUE(outward.isClosedOutward());
+
+    MeshAdjacency room = adjacencyOf(*soupGeometry(flipped(box({-1, -1, -1}, {1, 1, 1})), "room"));
+    EXPECT_TRUE(room.isClosed());
+    EXPECT_EQ(1u, room.inwardParts);
+    EXPECT_FALSE(room.isClosedOutward());
+
+    // an outward box inside the room, apart from its walls: two parts, one inward
+    MeshAdjacency both = adjacencyOf(*soupGeometry(
+        joined(flipped(box({-2, -2, -2}, {2, 2, 2})), box({-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f})), "both"));
+    EXPECT_TRUE(both.isClosed());
+    EXPECT_EQ(1u, both.inwardParts);
+
+    MeshAdjacency open = adjacencyOf(*soupGeometry(flipped(box({-1, -1, -1}, {1, 1, 1}, 1)), "open"));
+    EXPECT_FALSE(open.isClosed());
+    EXPECT_EQ(0u, open.inwardParts); // counted only for closed meshes
 }
 
 }
