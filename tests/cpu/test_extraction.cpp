@@ -498,7 +498,7 @@ TEST_P(SoupCount, IsZeroExactlyWhereNoFaceIsBetweenPointAndLight)
                                       std::to_string(p.z()) + ")";
             EXPECT_GT(count, -1e-6) << where;
             EXPECT_EQ(crossed > 0, count > 0.5) << where << ": count " << count << ", faces crossed " << crossed;
-            if (!GetParam().classic) EXPECT_NEAR(double(crossed), count, 1e-6) << where;
+            if (!GetParam().classic) { EXPECT_NEAR(double(crossed), count, 1e-6) << where; }
         }
     }
 }
