@@ -88,18 +88,21 @@ public:
         }
         if (is.getException()) return false;
         C& object = static_cast<C&>(obj);
+        // Copies: UBSan reports member access through `this` inside the pointer-to-member call.
+        const Getter getter = this->_getter;
+        const Setter setter = this->_setter;
         const osgShadowSilhouette::NumericPropertyRange* range = osgShadowSilhouette::numericPropertyRange(this->_name);
         if (!isNumber || (range && !osgShadowSilhouette::inRange(*range, number)))
         {
             const osgShadowSilhouette::NumericPropertyRange any{this->_name.c_str(), -INFINITY, INFINITY, false, ""};
             OSG_WARN << osgShadowSilhouette::refusedValueMessage(std::string(obj.libraryName()) + "::" + obj.className(),
                                                                  range ? *range : any, text, isNumber,
-                                                                 toText((object.*this->_getter)()))
+                                                                 toText((object.*getter)()))
                      << std::endl;
             return true;
         }
         if (!is.isBinary() && !std::is_same<P, bool>::value) value = static_cast<P>(number);
-        (object.*this->_setter)(value);
+        (object.*setter)(value);
         return true;
     }
 };
