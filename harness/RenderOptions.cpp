@@ -128,7 +128,7 @@ bool readProperty(const char* option, const char* property, const std::string& t
 {
     const osgShadowSilhouette::NumericPropertyRange& range = *osgShadowSilhouette::numericPropertyRange(property);
     double number = 0.0;
-    const bool isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+    const bool isNumber = osgShadowSilhouette::parseNumber(text, number);
     if (isNumber && osgShadowSilhouette::inRange(range, number))
     {
         value = static_cast<unsigned int>(number);

@@ -61,7 +61,7 @@ bool parseNumber(const std::string& text, double& value)
     errno = 0;
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || errno == ERANGE) return false;
+    if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) return false;
     value = v;
     return true;
 }

@@ -84,7 +84,7 @@ public:
         else
         {
             is >> text;
-            isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+            isNumber = osgShadowSilhouette::parseNumber(text, number);
         }
         if (is.getException()) return false;
         C& object = static_cast<C&>(obj);

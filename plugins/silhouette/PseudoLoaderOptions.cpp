@@ -56,7 +56,7 @@ void applyNumber(const char* property, const std::string& text, SilhouetteShadow
                  void (SilhouetteShadowTechnique::*set)(T), T (SilhouetteShadowTechnique::*get)() const)
 {
     double number = 0.0;
-    const bool isNumber = osgShadowSilhouette::parseNumber(text, number) && std::isfinite(number);
+    const bool isNumber = osgShadowSilhouette::parseNumber(text, number);
     const osgShadowSilhouette::NumericPropertyRange& range = *osgShadowSilhouette::numericPropertyRange(property);
     if (isNumber && osgShadowSilhouette::inRange(range, number))
     {
