@@ -8,8 +8,8 @@ namespace osgShadowSilhouette {
 // ---------------------------------------------------------------------------------------
 // CasterCollector
 
-CasterCollector::CasterCollector(MeshCache& cache, unsigned int traversalMask)
-    : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _cache(cache)
+CasterCollector::CasterCollector(MeshCache& cache, unsigned int traversalMask, const ViewPoint& view)
+    : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _cache(cache), _view(view)
 {
     setTraversalMask(traversalMask);
     _matrices.emplace_back();
@@ -22,6 +22,26 @@ void CasterCollector::apply(osg::Transform& transform)
     _matrices.push_back(m);
     traverse(transform);
     _matrices.pop_back();
+}
+
+void CasterCollector::apply(osg::LOD& lod)
+{
+    if (!_view.valid) return traverse(lod); // OSG's choice for a visitor that is not a cull visitor
+    for (unsigned int i = 0; i < lod.getNumChildren(); ++i)
+        if (_view.isActive(lod, i, _matrices.back())) lod.getChild(i)->accept(*this);
+}
+
+void CasterCollector::apply(osg::Billboard& billboard)
+{
+    const osg::Matrixd world = _matrices.back();
+    for (unsigned int i = 0; i < billboard.getNumDrawables(); ++i)
+    {
+        osg::Geometry* geometry = billboard.getDrawable(i) ? billboard.getDrawable(i)->asGeometry() : nullptr;
+        if (!geometry || !validNodeMask(*geometry)) continue;
+        _matrices.push_back(_view.billboardMatrix(billboard, i, world));
+        apply(*geometry);
+        _matrices.pop_back();
+    }
 }
 
 void CasterCollector::apply(osg::Camera&)
@@ -42,9 +62,9 @@ void CasterCollector::apply(osg::Geometry& geometry)
     _casters.push_back(caster);
 }
 
-std::vector<Caster> collectCasters(osg::Group& group, unsigned int castsMask, MeshCache& cache)
+std::vector<Caster> collectCasters(osg::Group& group, unsigned int castsMask, MeshCache& cache, const ViewPoint& view)
 {
-    CasterCollector collector(cache, castsMask);
+    CasterCollector collector(cache, castsMask, view);
     for (unsigned int i = 0; i < group.getNumChildren(); ++i) group.getChild(i)->accept(collector);
     return std::move(collector.getCasters());
 }

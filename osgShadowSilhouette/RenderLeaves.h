@@ -31,6 +31,15 @@ void eraseLeaves(osgUtil::RenderBin& bin, const Drop& drop)
     for (auto& nested : bin.getRenderBinList()) eraseLeaves(*nested.second, drop);
 }
 
+/** Calls @p visit on every leaf of @p bin and its nested bins. */
+template<class Visit>
+void forEachLeaf(osgUtil::RenderBin& bin, const Visit& visit)
+{
+    for (osgUtil::StateGraph* graph : bin.getStateGraphList())
+        for (const osg::ref_ptr<osgUtil::RenderLeaf>& leaf : graph->_leaves) visit(*leaf);
+    for (auto& nested : bin.getRenderBinList()) forEachLeaf(*nested.second, visit);
+}
+
 } // namespace detail
 } // namespace osgShadowSilhouette
 

@@ -123,6 +123,28 @@ void moveLeaves(osgUtil::RenderBin& bin, const std::unordered_set<const osg::Dra
     for (auto& nested : bin.getRenderBinList()) moveLeaves(*nested.second, drawables, ss);
 }
 
+/** Turns the leaves of billboard drawables in a light pass's @p bin (whose camera has the
+ *  view matrix @p lightView) as the eye's view turned them: OSG's cull turns them toward the
+ *  light camera. An instance is told by where its origin stands (the billboard's position
+ *  of the drawable); each leaf takes the nearest of the view's instances. */
+void turnBillboardLeaves(osgUtil::RenderBin& bin, const BillboardMatrices& billboards, const osg::Matrixd& lightView)
+{
+    const osg::Matrixd lightToWorld = osg::Matrixd::inverse(lightView);
+    detail::forEachLeaf(bin, [&](osgUtil::RenderLeaf& leaf) {
+        const auto found = billboards.find(leaf.getDrawable());
+        if (found == billboards.end() || found->second.empty() || !leaf._modelview) return;
+        const osg::Vec3d origin = leaf._modelview->getTrans() * lightToWorld;
+        const osg::Matrixd* nearest = nullptr;
+        double best = 0.0;
+        for (const osg::Matrixd& world : found->second)
+        {
+            const double d = (world.getTrans() - origin).length2();
+            if (!nearest || d < best) nearest = &world, best = d;
+        }
+        leaf._modelview = new osg::RefMatrix(*nearest * lightView);
+    });
+}
+
 /** The cull callback of a light-space camera (depth pass, triangle lists): culls the
  *  shadowed scene's casters into the camera's own render stage, leaving out the geometry
  *  with non-finite vertices, then the camera's own children. With setCasters(false) only
@@ -141,6 +163,8 @@ public:
     }
     /** The draws are those @p listed gives (the triangle lists: triangles only). */
     void setListed(ListedDrawables* listed) { _listed = listed; }
+    /** The billboard drawables are drawn as the view turned them (FrameContext::billboards). */
+    void setBillboards(std::shared_ptr<const BillboardMatrices> billboards) { _billboards = std::move(billboards); }
     void operator()(osg::Node* node, osg::NodeVisitor* nv) override
     {
         if (_scene && _casters)
@@ -150,6 +174,8 @@ public:
             if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
             if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
                 moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
+            if (cv && _billboards && !_billboards->empty() && cv->getCurrentRenderBin() && cv->getCurrentCamera())
+                turnBillboardLeaves(*cv->getCurrentRenderBin(), *_billboards, cv->getCurrentCamera()->getViewMatrix());
             if (cv && _listed && cv->getCurrentRenderBin()) _listed->apply(*cv->getCurrentRenderBin());
         }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
@@ -162,15 +188,41 @@ private:
     std::unordered_set<const osg::Drawable*> _marked;
     osg::ref_ptr<osg::StateSet> _markedStateSet;
     osg::ref_ptr<ListedDrawables> _listed;
+    std::shared_ptr<const BillboardMatrices> _billboards;
 };
 
 /** World bounds of the drawables under the traversal mask, leaving out (and listing) the
- *  geometry with NaN or infinite vertices, which neither casts nor bounds anything. */
+ *  geometry with NaN or infinite vertices, which neither casts nor bounds anything. LOD
+ *  children and billboard drawables are those @p view draws, turned as it turns them
+ *  (each instance's matrix recorded in `billboards`). */
 class FiniteBoundsVisitor : public osg::ComputeBoundsVisitor
 {
 public:
-    explicit FiniteBoundsVisitor(MeshCache& cache) : _cache(cache) {}
+    FiniteBoundsVisitor(MeshCache& cache, const ViewPoint& view) : _cache(cache), _view(view) {}
     std::vector<const osg::Drawable*> nonFinite;
+    BillboardMatrices billboards;
+
+    void apply(osg::LOD& lod) override
+    {
+        if (!_view.valid) return traverse(lod);
+        const osg::Matrixd world = current();
+        for (unsigned int i = 0; i < lod.getNumChildren(); ++i)
+            if (_view.isActive(lod, i, world)) lod.getChild(i)->accept(*this);
+    }
+    void apply(osg::Billboard& billboard) override
+    {
+        const osg::Matrixd world = current();
+        for (unsigned int i = 0; i < billboard.getNumDrawables(); ++i)
+        {
+            osg::Drawable* drawable = billboard.getDrawable(i);
+            if (!drawable || !validNodeMask(*drawable)) continue;
+            osg::Matrix turned = _view.billboardMatrix(billboard, i, world);
+            billboards[drawable].push_back(turned);
+            pushMatrix(turned);
+            apply(*drawable);
+            popMatrix();
+        }
+    }
 
     void apply(osg::Drawable& drawable) override
     {
@@ -182,7 +234,10 @@ public:
     }
 
 private:
+    osg::Matrixd current() const { return _matrixStack.empty() ? osg::Matrixd() : osg::Matrixd(_matrixStack.back()); }
+
     MeshCache& _cache;
+    ViewPoint _view;
 };
 
 /** World bounds of the casters and a hash of what a depth pass draws of them: each
@@ -190,7 +245,7 @@ private:
 class CasterSignatureVisitor : public FiniteBoundsVisitor
 {
 public:
-    explicit CasterSignatureVisitor(MeshCache& cache) : FiniteBoundsVisitor(cache), _meshCache(cache) {}
+    CasterSignatureVisitor(MeshCache& cache, const ViewPoint& view) : FiniteBoundsVisitor(cache, view), _meshCache(cache) {}
     std::size_t signature = 0;
     std::vector<CasterPart> parts; ///< each finite drawable: world box, and its plane when flat
 
@@ -300,9 +355,9 @@ osg::ref_ptr<osg::Texture2D> createLitTexture()
     return t;
 }
 
-osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask, MeshCache& cache)
+osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask, MeshCache& cache, const ViewPoint& view)
 {
-    FiniteBoundsVisitor cbv(cache);
+    FiniteBoundsVisitor cbv(cache, view);
     cbv.setTraversalMask(mask);
     for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(cbv);
     const osg::BoundingBox& b = cbv.getBoundingBox();
@@ -770,7 +825,9 @@ SilhouetteShadowTechnique::LightPass SilhouetteShadowTechnique::createLightPass(
     pass.depthTexture = createDepthTexture(_shadowMapSize);
     osg::ref_ptr<osg::Camera> camera = new osg::Camera;
     camera->setName("osgShadowSilhouette depth pass " + std::to_string(slot));
-    camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    // The view's eye point for LODs by distance (as osgShadow's techniques do); billboards
+    // are turned after the cull (turnBillboardLeaves).
+    camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF_INHERIT_VIEWPOINT);
     camera->setRenderOrder(osg::Camera::PRE_RENDER);
     camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     camera->setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
@@ -998,8 +1055,9 @@ std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<
 void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
 {
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
-    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask(), *_meshCache);
-    CasterSignatureVisitor casters(*_meshCache);
+    frame.view = ViewPoint::fromCullVisitor(cv);
+    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask(), *_meshCache, frame.view);
+    CasterSignatureVisitor casters(*_meshCache, frame.view);
     casters.setTraversalMask(settings->getCastsShadowTraversalMask());
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(casters);
     casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
@@ -1008,11 +1066,13 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
     frame.casterSignature = casters.signature;
     frame.casterParts = std::move(casters.parts);
     frame.nonFinite = casters.nonFinite;
+    if (!casters.billboards.empty())
+        frame.billboards = std::make_shared<const BillboardMatrices>(std::move(casters.billboards));
     for (const osg::Drawable* drawable : frame.nonFinite) warnNonFinite(*drawable);
     frame.region = visibleReceiverRegion(cv, frame.receivers);
     if (frame.mode != SHADOW_MAP)
         frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
-                                          *_meshCache);
+                                          *_meshCache, frame.view);
 }
 
 std::vector<LightFrustum> SilhouetteShadowTechnique::planLightFrusta(const FrameContext& frame,
@@ -1138,6 +1198,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     {
         scene->setCasters(!reuse);
         scene->setExcluded(frame.nonFinite);
+        scene->setBillboards(frame.billboards);
     }
     pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
     if (reuse)
@@ -1233,6 +1294,7 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
         if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.listPass->getCamera()->getCullCallback()))
         {
             scene->setExcluded(frame.nonFinite);
+            scene->setBillboards(frame.billboards);
             std::unordered_set<const osg::Drawable*> closed;
             for (const Caster& caster : frame.casterList)
                 if (caster.closed) closed.insert(caster.geometry.get());

@@ -393,7 +393,7 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
 
     osg::Camera& c = *_camera;
     c.setName(name);
-    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF_INHERIT_VIEWPOINT); // LODs chosen by the view's eye, as the depth pass
     c.setRenderOrder(osg::Camera::PRE_RENDER, 2); // after the depth pass
     c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     c.setImplicitBufferAttachmentMask(0, 0);
