@@ -70,6 +70,16 @@ private:
     bool _begin;
 };
 
+/** A drawable in a node of its own, drawn in render bin `bin`. */
+osg::ref_ptr<osg::Node> counterNode(osg::ref_ptr<osg::Drawable> drawable, int bin)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(drawable.get());
+    geode->setCullingActive(false);
+    geode->getOrCreateStateSet()->setRenderBinDetails(bin, "RenderBin");
+    return geode;
+}
+
 /** Draws a caster's box inside its occlusion query. */
 class IssueQueryCallback : public osg::Drawable::DrawCallback
 {
@@ -129,6 +139,72 @@ osg::ref_ptr<osg::Drawable> GpuCounter::createEnd()
     return new CallDrawable(this, false);
 }
 
+osg::ref_ptr<osg::Node> GpuCounter::createBeginNode(int bin)
+{
+    return counterNode(createBegin(), bin);
+}
+
+osg::ref_ptr<osg::Node> GpuCounter::createEndNode(int bin)
+{
+    return counterNode(createEnd(), bin);
+}
+
+bool GpuCounter::atomic() const
+{
+    return _target == GL_ATOMIC_COUNTER_BUFFER;
+}
+
+bool GpuCounter::create(osg::RenderInfo& info, PerContext& c) const
+{
+    const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+    if (atomic())
+    {
+        if (!ext || !ext->glGenBuffers || !ext->glBindBuffer || !ext->glBufferData || !ext->glBufferSubData ||
+            !ext->glGetBufferSubData || !ext->glBindBufferBase || !ext->glFenceSync || !ext->glClientWaitSync ||
+            !ext->glDeleteSync || !osg::isGLExtensionOrVersionSupported(info.getContextID(),
+                                                                        "GL_ARB_shader_atomic_counters", 4.2f))
+            return false;
+        ext->glGenBuffers(RING, c.ids);
+        const GLuint zero = 0;
+        for (GLuint id : c.ids)
+        {
+            ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, id);
+            ext->glBufferData(GL_ATOMIC_COUNTER_BUFFER, sizeof(zero), &zero, GL_DYNAMIC_READ);
+        }
+        ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
+        return true;
+    }
+    const bool statistics = _target == GL_FRAGMENT_SHADER_INVOCATIONS_ARB;
+    if (!queriesSupported(ext) ||
+        (statistics && !osg::isGLExtensionSupported(info.getContextID(), "GL_ARB_pipeline_statistics_query")))
+        return false;
+    ext->glGenQueries(RING, c.ids);
+    return true;
+}
+
+bool GpuCounter::collect(const osg::GLExtensions& ext, PerContext& c, unsigned int i, long long& value) const
+{
+    if (atomic())
+    {
+        if (ext.glClientWaitSync(c.fences[i], 0, 0) == GL_TIMEOUT_EXPIRED) return false;
+        ext.glDeleteSync(c.fences[i]);
+        c.fences[i] = nullptr;
+        GLuint count = 0;
+        ext.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, c.ids[i]);
+        ext.glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(count), &count);
+        ext.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
+        value = static_cast<long long>(count);
+        return true;
+    }
+    GLuint available = 0;
+    ext.glGetQueryObjectuiv(c.ids[i], GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) return false;
+    GLuint64 result = 0;
+    ext.glGetQueryObjectui64v(c.ids[i], GL_QUERY_RESULT, &result);
+    value = static_cast<long long>(result);
+    return true;
+}
+
 void GpuCounter::begin(osg::RenderInfo& info)
 {
     osg::State* state = info.getState();
@@ -136,32 +212,31 @@ void GpuCounter::begin(osg::RenderInfo& info)
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     PerContext& c = _contexts[info.getContextID()];
     if (c.unsupported) return;
-    if (c.ids[0] == 0)
+    if (c.ids[0] == 0 && !create(info, c))
     {
-        const bool statistics = _target == GL_FRAGMENT_SHADER_INVOCATIONS_ARB;
-        if (!queriesSupported(ext) ||
-            (statistics && !osg::isGLExtensionSupported(info.getContextID(), "GL_ARB_pipeline_statistics_query")))
-        {
-            c.unsupported = true;
-            return;
-        }
-        ext->glGenQueries(RING, c.ids);
+        c.unsupported = true;
+        return;
     }
     // Take every finished result, oldest first, without waiting for the others.
     for (unsigned int k = 0; k < RING; ++k)
     {
         const unsigned int i = (c.next + k) % RING;
-        if (!c.pending[i]) continue;
-        GLuint available = 0;
-        ext->glGetQueryObjectuiv(c.ids[i], GL_QUERY_RESULT_AVAILABLE, &available);
-        if (!available) continue;
-        GLuint64 value = 0;
-        ext->glGetQueryObjectui64v(c.ids[i], GL_QUERY_RESULT, &value);
+        long long value = 0;
+        if (!c.pending[i] || !collect(*ext, c, i, value)) continue;
         c.pending[i] = false;
-        _last.store(static_cast<long long>(value));
+        _last.store(value);
     }
     if (c.pending[c.next]) return; // the GPU is far behind: skip this frame rather than wait
-    ext->glBeginQuery(_target, c.ids[c.next]);
+    if (atomic())
+    {
+        const GLuint zero = 0;
+        ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, c.ids[c.next]);
+        ext->glBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(zero), &zero);
+        ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
+        ext->glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, ATOMIC_BINDING, c.ids[c.next]);
+    }
+    else
+        ext->glBeginQuery(_target, c.ids[c.next]);
     c.active = true;
     _lastFrame.store(frameOf(info));
 }
@@ -172,7 +247,13 @@ void GpuCounter::end(osg::RenderInfo& info)
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     PerContext& c = _contexts[info.getContextID()];
     if (!c.active) return;
-    ext->glEndQuery(_target);
+    if (atomic())
+    {
+        ext->glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, ATOMIC_BINDING, 0);
+        c.fences[c.next] = ext->glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    }
+    else
+        ext->glEndQuery(_target);
     c.active = false;
     c.pending[c.next] = true;
     c.next = (c.next + 1) % RING;
@@ -180,7 +261,7 @@ void GpuCounter::end(osg::RenderInfo& info)
 
 void GpuCounter::releaseGLObjects(osg::State* state) const
 {
-    // Query names die with their context; a context that lives on gets new ones.
+    // Query and buffer names die with their context; a context that lives on gets new ones.
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     if (state)
         _contexts.erase(state->getContextID());

@@ -388,15 +388,6 @@ enum LightBin
 #endif
 
 /** A node holding one drawable (a counter's begin or end) in render bin `bin`. */
-osg::ref_ptr<osg::Group> counterNode(osg::ref_ptr<osg::Drawable> drawable, int bin)
-{
-    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    geode->addDrawable(drawable.get());
-    geode->setCullingActive(false);
-    geode->getOrCreateStateSet()->setRenderBinDetails(bin, "RenderBin");
-    return geode;
-}
-
 osg::ref_ptr<osg::StateSet> passState(int bin, osg::Program* program)
 {
     osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
@@ -469,8 +460,8 @@ void StencilShadowPasses::build(Slot& s) const
     s.volumeState->setRenderBinDetails(bin + BIN_VOLUMES, "RenderBin");
     s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
     s.volumeCounter = new GpuCounter(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    s.volumeBegin = counterNode(s.volumeCounter->createBegin(), bin + BIN_VOLUME_BEGIN);
-    s.volumeEnd = counterNode(s.volumeCounter->createEnd(), bin + BIN_VOLUME_END);
+    s.volumeBegin = s.volumeCounter->createBeginNode(bin + BIN_VOLUME_BEGIN);
+    s.volumeEnd = s.volumeCounter->createEndNode(bin + BIN_VOLUME_END);
 
     s.litState = passState(bin + BIN_LIT, _lighting.get());
     s.litState->setDefine("OSS_LIGHT_PASS", slot);
@@ -480,8 +471,8 @@ void StencilShadowPasses::build(Slot& s) const
     if (!s.hybrid) return;
 
     s.maskCounter = new GpuCounter(GL_SAMPLES_PASSED);
-    s.maskBegin = counterNode(s.maskCounter->createBegin(), bin + BIN_MASK_BEGIN);
-    s.maskEnd = counterNode(s.maskCounter->createEnd(), bin + BIN_MASK_END);
+    s.maskBegin = s.maskCounter->createBeginNode(bin + BIN_MASK_BEGIN);
+    s.maskEnd = s.maskCounter->createEndNode(bin + BIN_MASK_END);
     s.maskState = passState(bin + BIN_MASK, _lighting.get());
     s.maskState->setDefine("OSS_HYBRID_MASK", slot);
     s.maskState->setDefine("OSS_LIGHT_NUM", light);

@@ -731,6 +731,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
     {
         const ViewData& vd = *entry.second;
         vd.receiverStateSet->releaseGLObjects(state);
+        vd.exactCounter->releaseGLObjects(state);
         for (const LightPass& pass : vd.passes)
         {
             if (pass.samples) pass.samples->releaseGLObjects(state);
@@ -813,6 +814,9 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
     ss->addUniform(new osg::Uniform(shader::LOOKUP_BIAS_PER_DISTANCE, shader::LOOKUP_BIAS));
     ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
+    vd->exactCounter = new GpuCounter(GL_ATOMIC_COUNTER_BUFFER);
+    vd->exactBegin = vd->exactCounter->createBeginNode(DEPTH_PREPASS_BIN - 1); // before every receiver
+    vd->exactEnd = vd->exactCounter->createEndNode(COUNT_END_BIN);
     vd->passes.resize(slots);
     vd->slotInUse.assign(slots, false);
     vd->slotSkipped.assign(slots, false);
@@ -933,6 +937,17 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.receiverStateSet->setDefine(shader::DEFINE_TRIANGLE_LISTS);
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_TRIANGLE_LISTS);
+    // Statistics of HYBRID's lists: the fragments resolved exactly, counted in the eye pass.
+    const bool countExact = frame.triangleLists && _stats.valid();
+    if (countExact)
+    {
+        vd.receiverStateSet->setDefine(shader::DEFINE_COUNT_EXACT);
+        vd.exactBegin->accept(cv);
+        vd.exactEnd->accept(cv);
+        stats.silhouettePixels = vd.exactCounter->getLastValue();
+    }
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_COUNT_EXACT);
     if (frame.mode == HYBRID)
         vd.receiverStateSet->setDefine(shader::DEFINE_BIAS_BAND);
     else

@@ -8,7 +8,7 @@
 // texture-space x, y and lies nearer to the light. Other pixels keep the shadow map's answer.
 // Linked into the receiver program; empty unless OSS_TRIANGLE_LISTS is defined.
 
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT)
 #ifdef OSS_TRIANGLE_LISTS
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
@@ -45,6 +45,14 @@ layout(std430, binding = 1) readonly buffer OssListHeads { uint data[]; } oss_li
 #define OSS_HEAD_LOAD(k, i) oss_listHeads[k].data[i]
 #else
 #define OSS_HEAD_LOAD(k, i) OSS_LIST_LOAD(k, (i) >> 2u)[(i) & 3u]
+#endif
+// OSS_COUNT_EXACT (while the technique records statistics): the fragments resolved exactly,
+// summed over slots, in an atomic counter (GpuCounter's binding 0): HYBRID's silhouette
+// pixels. Tests are early so that a hidden fragment is not counted (a shader with side
+// effects would otherwise run before them) and early-z still works.
+#ifdef OSS_COUNT_EXACT
+layout(early_fragment_tests) in;
+layout(binding = 0, offset = 0) uniform atomic_uint oss_exactFragments;
 #endif
 uniform uvec4 oss_listCapacity[OSS_MAX_SHADOW_SLOTS];  // nodes, triangles, grid size, 0 of each slot's buffer
 uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective light
@@ -246,6 +254,9 @@ float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk)
     vec4 p = oss_listPoint(s, oss_listRayOrigin(eyePosition));
     bool front = p.w > 0.0;
     bool uncertain = front && oss_listUncertain(s, pcf, eyePosition);
+#ifdef OSS_COUNT_EXACT
+    if (uncertain) atomicCounterIncrement(oss_exactFragments);
+#endif
     float lit = oss_listWalk(s, p.xy, p.z, walk && uncertain);
     lit = walk && front ? lit : pcf;
     return uncertain ? (lit < 0.0 ? step(0.5, pcf) : lit) : pcf;
