@@ -5,6 +5,7 @@
 #include <osg/State>
 
 #include <algorithm>
+#include <iterator>
 
 namespace osgShadowSilhouette {
 namespace detail {
@@ -70,6 +71,11 @@ void ProgramLinkCheck::watch(osg::Program* program)
     _programs.erase(std::remove_if(_programs.begin(), _programs.end(),
                                    [](const osg::observer_ptr<osg::Program>& p) { return !p.valid(); }),
                     _programs.end());
+    // Nor do the reports of programs gone: a new program at the same address is checked.
+    for (auto it = _reported.begin(); it != _reported.end();)
+        it = std::any_of(_programs.begin(), _programs.end(), [&](const auto& p) { return p == it->first; })
+                 ? std::next(it)
+                 : _reported.erase(it);
     for (const auto& p : _programs)
         if (p == program) return;
     _programs.push_back(program);
