@@ -601,16 +601,11 @@ void SilhouetteShadowTechnique::init()
 {
     if (!_shadowedScene) return;
 
-    _shadowFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SHADOW_FRAG);
     _receiverProgram = new osg::Program;
     _receiverProgram->setName("osgShadowSilhouette receiver");
     _receiverProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _receiverProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_RECEIVER_FRAG));
-    _receiverProgram->addShader(_shadowFragmentShader.get());
-    _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
-    _receiverProgram->addShader(_silhouetteFragmentShader.get());
-    osg::ref_ptr<osg::Shader> listTerm = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
-    _receiverProgram->addShader(listTerm.get());
+    addShadowShaders(_receiverProgram.get());
     _listStateSet = TriangleListPass::createSharedStateSet();
     _listFrontOnlyStateSet = new osg::StateSet;
     _listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
@@ -623,9 +618,7 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->setName("osgShadowSilhouette stencil passes");
     _stencilProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
-    _stencilProgram->addShader(_shadowFragmentShader.get());
-    _stencilProgram->addShader(_silhouetteFragmentShader.get());
-    _stencilProgram->addShader(listTerm.get());
+    addShadowShaders(_stencilProgram.get());
     _volumeProgram = new osg::Program;
     _volumeProgram->setName("osgShadowSilhouette shadow volumes");
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
@@ -637,6 +630,10 @@ void SilhouetteShadowTechnique::init()
     _prepassProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
     _prepassProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
     _litDummyTexture = createLitTexture();
+    for (osg::Program* program : {_volumeProgram.get(), _prepassProgram.get()}) watchProgramLink(program);
+    for (osg::StateSet* ss : {_depthPassStateSet.get(), _listStateSet.get(), _silhouetteMapStateSet.get(),
+                              dynamic_cast<osg::StateSet*>(_silhouetteMapStateSet->getUserData())})
+        if (ss) watchProgramLink(dynamic_cast<osg::Program*>(ss->getAttribute(osg::StateAttribute::PROGRAM)));
 
     TagBaseTextureVisitor tagger;
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
@@ -1006,6 +1003,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     if (stencilMode)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
     updateViewUniforms(cv, vd, lights, slots);
+    cullProgramLinkCheck(cv);
     if (const osg::Viewport* viewport = cv.getViewport())
         stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
     recordStatistics(stats);
