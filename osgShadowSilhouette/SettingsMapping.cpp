@@ -134,6 +134,9 @@ MappedSettings mapShadowSettings(const ShadowSettingsValues& settings, const Map
     const MappedProperties ownDefaults;
     MappedSettings mapped;
     mapped.maximumShadowDistance = DBL_MAX;
+    // UseOverrideForShadowMapTexture false: a texture of the model on a map's unit replaces
+    // the map below it (a depth texture of 1s leaves a subgraph unshadowed).
+    mapped.mapsOverride = settings.useOverrideForShadowMapTexture;
     PropertyMapping mapping(mapped.warnings);
     MappedProperties& v = mapped.values;
 
@@ -187,9 +190,6 @@ MappedSettings mapShadowSettings(const ShadowSettingsValues& settings, const Map
         {WARN_SETTINGS_NEAR_FAR_RATIO, settings.minimumShadowMapNearFarRatio != osgDefaults.minimumShadowMapNearFarRatio,
          "MinimumShadowMapNearFarRatio", text(settings.minimumShadowMapNearFarRatio),
          "it bounds the near plane of warped (perspective) shadow maps, and the maps here are not warped"},
-        {WARN_SETTINGS_OVERRIDE, !settings.useOverrideForShadowMapTexture, "UseOverrideForShadowMapTexture", "false",
-         "the shadow maps always override a texture of the model on their units (BaseTextureUnit and after), "
-         "which would replace a map; move that texture or BaseTextureUnit instead"},
         {WARN_SETTINGS_PROJECTION_HINT, settings.shadowMapProjectionHint != osgDefaults.shadowMapProjectionHint,
          "ShadowMapProjectionHint", projectionHintName(settings.shadowMapProjectionHint),
          "each light's maps take its own projection (orthographic for directional lights, perspective for spot "
@@ -219,12 +219,13 @@ bool SilhouetteShadowTechnique::applyShadowSettings()
     if (_settingsApplied && values == _appliedSettings && _properties == _appliedProperties) return false;
     const MappedSettings mapped = mapShadowSettings(values, _properties);
     for (const SettingsWarning& warning : mapped.warnings) warnOnce(warning.key, warning.message);
-    const bool rebuild = mapped.values.baseTextureUnit != _baseTextureUnit;
+    const bool rebuild = mapped.values.baseTextureUnit != _baseTextureUnit || mapped.mapsOverride != _mapsOverride;
     _shadowMapSize = mapped.values.shadowMapSize;
     _lightNum = mapped.values.lightNum;
     _baseTextureUnit = mapped.values.baseTextureUnit;
     _debugView = static_cast<DebugView>(mapped.values.debugView);
     _maximumShadowDistance = mapped.maximumShadowDistance;
+    _mapsOverride = mapped.mapsOverride;
     _appliedSettings = values;
     _appliedProperties = _properties;
     _settingsApplied = true;

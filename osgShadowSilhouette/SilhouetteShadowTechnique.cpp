@@ -38,7 +38,8 @@ constexpr unsigned int MAX_MAP_SIZE = 16384;
  *  win over the model's state on the same units: a model's texture on a map's unit would
  *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
  *  none of the model's units there; a program of the model's own that does needs another
- *  BaseTextureUnit. */
+ *  BaseTextureUnit. The maps' textures give up OVERRIDE where the ShadowSettings'
+ *  UseOverrideForShadowMapTexture is false (mapBinding()). */
 constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
 
 std::atomic<bool>& emptyFaceSkipping()
@@ -791,7 +792,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         // them: the elements after those are never read (a valid unit all the same).
         silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
-        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), EYE_PASS_BINDING);
+        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), mapBinding());
     }
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
     {
@@ -971,7 +972,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
             vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                             EYE_PASS_BINDING);
+                                                             mapBinding());
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
@@ -1168,7 +1169,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
         if (queries) pass.depthCamera->addChild(queries);
     }
     cullLightPasses(cv, pass, frame, light, stats);
-    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), EYE_PASS_BINDING);
+    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), mapBinding());
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
@@ -1521,7 +1522,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
         else
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
-                                           EYE_PASS_BINDING);
+                                           mapBinding());
     }
 }
 

@@ -134,6 +134,15 @@ TEST(SettingsMapping, OutOfRangeLightNumAndUnitAreIgnoredWithAWarning)
         << onlyWarning(mapped);
 }
 
+TEST(SettingsMapping, UseOverrideForShadowMapTexture)
+{
+    EXPECT_TRUE(mapShadowSettings(ShadowSettingsValues(), MappedProperties()).mapsOverride);
+    const auto s = settingsWith([](osgShadow::ShadowSettings& s) { s.setUseOverrideForShadowMapTexture(false); });
+    const MappedSettings mapped = mapShadowSettings(s, MappedProperties());
+    EXPECT_FALSE(mapped.mapsOverride);
+    EXPECT_TRUE(mapped.warnings.empty());
+}
+
 TEST(SettingsMapping, MaximumShadowMapDistance)
 {
     const auto near = settingsWith([](osgShadow::ShadowSettings& s) { s.setMaximumShadowMapDistance(40.0); });
@@ -166,8 +175,6 @@ TEST(SettingsMapping, SettingsWithoutMeaningWarn)
          "ShaderHint PROVIDE_FRAGMENT_SHADER is ignored", WARN_SETTINGS_SHADER_HINT},
         {[](osgShadow::ShadowSettings& s) { s.setMinimumShadowMapNearFarRatio(0.2); },
          "MinimumShadowMapNearFarRatio 0.2 is ignored", WARN_SETTINGS_NEAR_FAR_RATIO},
-        {[](osgShadow::ShadowSettings& s) { s.setUseOverrideForShadowMapTexture(false); },
-         "UseOverrideForShadowMapTexture false is ignored", WARN_SETTINGS_OVERRIDE},
     };
     for (const auto& c : cases)
     {

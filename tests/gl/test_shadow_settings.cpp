@@ -9,6 +9,7 @@
 #include <osgUtil/CullVisitor>
 
 #include <cfloat>
+#include <functional>
 
 using osstest::NotifyCapture;
 using osstest::ShadowedRender;
@@ -54,6 +55,17 @@ osshar::RenderOptions ringWithThreeLights()
 }
 
 const osg::Vec4 GREY(128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1);
+
+/** With `change(true)` light 0's mask has more than `fewer` unlit pixels less than `before`
+ *  (`why`); after `change(false)` it is `before` again. */
+void expectFewerUnlitUntilUndone(ShadowedRender& r, const ossref::Mask& before, long long fewer,
+                                 const std::function<void(bool)>& change, const char* why)
+{
+    change(true);
+    EXPECT_LT(r.mask().count(ossref::MASK_NO_LIGHT), before.count(ossref::MASK_NO_LIGHT) - fewer) << why;
+    change(false);
+    EXPECT_EQ(differing(r.mask(), before), 0) << "undone";
+}
 
 } // namespace
 
@@ -222,18 +234,44 @@ TEST(ShadowSettingsGL, MaximumShadowMapDistanceEndsTheShadows)
     // the casters' shadows, all beyond, are gone.
     const double nearGround = 13.0;
     ASSERT_GT((r.scene.view.eye - r.scene.view.center).length(), 18.0);
-    settingsOf(r).setMaximumShadowMapDistance(nearGround);
-    const ossref::Mask near = r.mask();
-    EXPECT_LT(near.count(ossref::MASK_NO_LIGHT), all.count(ossref::MASK_NO_LIGHT) - 500)
-        << "the far shadows are gone";
-    settingsOf(r).setMaximumShadowMapDistance(DBL_MAX);
-    EXPECT_EQ(differing(r.mask(), all), 0);
+    expectFewerUnlitUntilUndone(
+        r, all, 500, [&](bool on) { settingsOf(r).setMaximumShadowMapDistance(on ? nearGround : DBL_MAX); },
+        "the far shadows are gone");
 
     ShadowedRender v("default", "volume", 1024, W, H);
     ASSERT_TRUE(v.valid());
     const ossref::Mask volumes = v.mask();
     settingsOf(v).setMaximumShadowMapDistance(nearGround);
     EXPECT_EQ(differing(v.mask(), volumes), 0);
+}
+
+namespace {
+
+/** A 1x1 depth texture at the far plane, compared as the shadow maps are: lit everywhere. */
+osg::ref_ptr<osg::Texture2D> litDepthTexture()
+{
+    osg::ref_ptr<osg::Texture2D> t = osgShadowSilhouette::SilhouetteMapPass::createLitDepthTexture();
+    t->setShadowComparison(true);
+    t->setShadowCompareFunc(osg::Texture::LEQUAL);
+    return t;
+}
+
+} // namespace
+
+// UseOverrideForShadowMapTexture false: a texture of the model on the shadow map's unit
+// replaces the map below it; here a lit depth texture on the whole model leaves it
+// unshadowed. With the default (true) the map wins and the picture stays.
+TEST(ShadowSettingsGL, UseOverrideForShadowMapTextureFalseLetsTheModelsTextureWin)
+{
+    ShadowedRender r("default", "shadowmap", 1024, W, H);
+    ASSERT_TRUE(r.valid());
+    const ossref::Mask shadowed = r.mask();
+    r.scene.content->getOrCreateStateSet()->setTextureAttributeAndModes(r.technique->getEffectiveBaseTextureUnit(),
+                                                                         litDepthTexture().get());
+    EXPECT_EQ(differing(r.mask(), shadowed), 0) << "the map overrides the model's texture";
+    expectFewerUnlitUntilUndone(
+        r, shadowed, 300, [&](bool on) { settingsOf(r).setUseOverrideForShadowMapTexture(!on); },
+        "the model's lit texture replaces the map: only the faces turned away stay dark");
 }
 
 // The settings without a meaning here: the picture stays, and each warns exactly once,
@@ -251,15 +289,13 @@ TEST(ShadowSettingsGL, SettingsWithoutMeaningWarnOnce)
     s.setMultipleShadowMapHint(osgShadow::ShadowSettings::CASCADED);
     s.setShaderHint(osgShadow::ShadowSettings::PROVIDE_VERTEX_AND_FRAGMENT_SHADER);
     s.setMinimumShadowMapNearFarRatio(0.2);
-    s.setUseOverrideForShadowMapTexture(false);
     const ossref::Mask after = r.mask(0, 4);
     EXPECT_EQ(differing(before, after), 0);
     for (const char* named :
          {"ShadowMapProjectionHint ORTHOGRAPHIC_SHADOW_MAP is ignored", "PerspectiveShadowMapCutOffAngle 10 is ignored",
           "NumShadowMapsPerLight 2 is ignored", "MultipleShadowMapHint CASCADED is ignored",
-          "ShaderHint PROVIDE_VERTEX_AND_FRAGMENT_SHADER is ignored", "MinimumShadowMapNearFarRatio 0.2 is ignored",
-          "UseOverrideForShadowMapTexture false is ignored"})
+          "ShaderHint PROVIDE_VERTEX_AND_FRAGMENT_SHADER is ignored", "MinimumShadowMapNearFarRatio 0.2 is ignored"})
         EXPECT_EQ(warnings.count(std::string("ShadowSettings ") + named), 1) << named << "\n" << warnings.warnings();
     r.renderer->timeFrames(0, 2);
-    EXPECT_EQ(warnings.count("ShadowSettings "), 7) << warnings.warnings();
+    EXPECT_EQ(warnings.count("ShadowSettings "), 6) << warnings.warnings();
 }
