@@ -222,21 +222,25 @@ TEST(ShadowSettingsGL, ComputeNearFarModeOverrideAppliesToTheReceivers)
 }
 
 // MaximumShadowMapDistance: the maps cover the receivers up to that eye distance; beyond
-// they are lit. Back to DBL_MAX, the picture is the default's again. SHADOW_VOLUME has no
-// map and keeps its shadows.
+// they are lit, in every mode with a map. Back to DBL_MAX, the picture is the default's
+// again. SHADOW_VOLUME has no map and keeps its shadows.
 TEST(ShadowSettingsGL, MaximumShadowMapDistanceEndsTheShadows)
 {
-    ShadowedRender r("default", "shadowmap", 1024, W, H);
-    ASSERT_TRUE(r.valid());
-    const ossref::Mask all = r.mask();
     // The default view looks at the casters from 19 units; the light throws their shadows
     // away from the eye. Within 13 units lies only the near ground, which nothing shadows:
     // the casters' shadows, all beyond, are gone.
     const double nearGround = 13.0;
-    ASSERT_GT((r.scene.view.eye - r.scene.view.center).length(), 18.0);
-    expectFewerUnlitUntilUndone(
-        r, all, 500, [&](bool on) { settingsOf(r).setMaximumShadowMapDistance(on ? nearGround : DBL_MAX); },
-        "the far shadows are gone");
+    for (const char* mode : {"shadowmap", "silhouette", "hybrid"})
+    {
+        ShadowedRender r("default", mode, 1024, W, H);
+        ASSERT_TRUE(r.valid());
+        ASSERT_GT((r.scene.view.eye - r.scene.view.center).length(), 18.0);
+        const ossref::Mask all = r.mask();
+        SCOPED_TRACE(mode);
+        expectFewerUnlitUntilUndone(
+            r, all, 500, [&](bool on) { settingsOf(r).setMaximumShadowMapDistance(on ? nearGround : DBL_MAX); },
+            "the far shadows are gone");
+    }
 
     ShadowedRender v("default", "volume", 1024, W, H);
     ASSERT_TRUE(v.valid());
