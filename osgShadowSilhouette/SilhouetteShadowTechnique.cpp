@@ -38,7 +38,8 @@ constexpr unsigned int MAX_MAP_SIZE = 16384;
  *  win over the model's state on the same units: a model's texture on a map's unit would
  *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
  *  none of the model's units there; a program of the model's own that does needs another
- *  BaseTextureUnit. */
+ *  BaseTextureUnit. The maps' textures give up OVERRIDE where the ShadowSettings'
+ *  UseOverrideForShadowMapTexture is false (mapBinding()). */
 constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
 
 std::atomic<bool>& emptyFaceSkipping()
@@ -376,6 +377,7 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode)
 SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechnique& copy, const osg::CopyOp& copyop)
     : osgShadow::ShadowTechnique(copy, copyop),
       _mode(copy._mode),
+      _properties(copy._properties),
       _shadowMapSize(copy._shadowMapSize),
       _polygonOffsetFactor(copy._polygonOffsetFactor),
       _polygonOffsetUnits(copy._polygonOffsetUnits),
@@ -451,7 +453,8 @@ SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::getEffectiveMode() co
 
 void SilhouetteShadowTechnique::setShadowMapSize(unsigned int size)
 {
-    if (acceptValue("ShadowMapSize", size, _shadowMapSize)) _shadowMapSize = size;
+    if (acceptValue("ShadowMapSize", size, _properties.shadowMapSize)) _properties.shadowMapSize = size;
+    if (applyShadowSettings()) dirty();
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
@@ -476,7 +479,8 @@ void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)
 
 void SilhouetteShadowTechnique::setLightNum(int lightNum)
 {
-    if (acceptValue("LightNum", lightNum, _lightNum)) _lightNum = lightNum;
+    if (acceptValue("LightNum", lightNum, _properties.lightNum)) _properties.lightNum = lightNum;
+    if (applyShadowSettings()) dirty();
 }
 
 void SilhouetteShadowTechnique::setMaxShadowLights(unsigned int count)
@@ -488,8 +492,9 @@ void SilhouetteShadowTechnique::setMaxShadowLights(unsigned int count)
 
 void SilhouetteShadowTechnique::setBaseTextureUnit(unsigned int unit)
 {
-    if (!acceptValue("BaseTextureUnit", unit, _baseTextureUnit)) return;
-    _baseTextureUnit = unit;
+    if (!acceptValue("BaseTextureUnit", unit, _properties.baseTextureUnit)) return;
+    _properties.baseTextureUnit = unit;
+    applyShadowSettings();
     dirty();
 }
 
@@ -501,7 +506,8 @@ void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
 
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
 {
-    _debugView = (view >= DEBUG_NONE && view <= DEBUG_CLASSES) ? view : DEBUG_NONE;
+    _properties.debugView = (view >= DEBUG_NONE && view <= DEBUG_CLASSES) ? view : DEBUG_NONE;
+    if (applyShadowSettings()) dirty();
 }
 
 void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
@@ -675,6 +681,7 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet()
 
 void SilhouetteShadowTechnique::update(osg::NodeVisitor& nv)
 {
+    if (applyShadowSettings()) init(); // a new BaseShadowTextureUnit: the views' state anew
     if (_shadowedScene) _shadowedScene->osg::Group::traverse(nv);
 }
 
@@ -783,7 +790,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         // them: the elements after those are never read (a valid unit all the same).
         silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
         vd->eyeToShadow->setElement(slot, osg::Matrixf());
-        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), EYE_PASS_BINDING);
+        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), mapBinding());
     }
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
     {
@@ -977,7 +984,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
             vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
-                                                             EYE_PASS_BINDING);
+                                                             mapBinding());
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
@@ -1175,7 +1182,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
         if (queries) pass.depthCamera->addChild(queries);
     }
     cullLightPasses(cv, pass, frame, light, stats);
-    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), EYE_PASS_BINDING);
+    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), mapBinding());
     if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
     if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
@@ -1247,6 +1254,7 @@ void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
     warnOnce(WARN_CONTEXT_MAP_SIZE, "ShadowMapSize " + std::to_string(_shadowMapSize) +
                                         " exceeds the context's GL_MAX_TEXTURE_SIZE (" +
                                         std::to_string(ext->maxTextureSize) + "); clamped to it");
+    if (_properties.shadowMapSize == _shadowMapSize) _properties.shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
     _shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
 }
 
@@ -1427,14 +1435,22 @@ void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewD
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
 {
+    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
     const unsigned int mask = cv.getTraversalMask();
-    cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getReceivesShadowTraversalMask());
+    cv.setTraversalMask(mask & settings->getReceivesShadowTraversalMask());
+    // ComputeNearFarModeOverride: how the view computes its near and far planes over the
+    // receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits.
+    const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
+    const osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
+    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.setComputeNearFarMode(nearFarOverride);
     updateReceiverDefines(vd);
     cv.pushStateSet(vd.receiverStateSet.get());
     if (pass) cv.pushStateSet(pass);
     _shadowedScene->osg::Group::traverse(cv);
     if (pass) cv.popStateSet();
     cv.popStateSet();
+    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
+    cv.setComputeNearFarMode(nearFar);
     cv.setTraversalMask(mask);
 }
 
@@ -1519,7 +1535,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
         else
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
-                                           EYE_PASS_BINDING);
+                                           mapBinding());
     }
 }
 
@@ -1572,7 +1588,8 @@ std::vector<osg::Vec3d> SilhouetteShadowTechnique::visibleReceiverRegion(osgUtil
     double zNear = cv.getCalculatedNearPlane();
     double zFar = cv.getCalculatedFarPlane();
     const osg::Matrixd& projection = *cv.getProjectionMatrix();
-    if (cv.getComputeNearFarMode() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR)
+    if (cv.getComputeNearFarMode() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR &&
+        _shadowedScene->getShadowSettings()->getComputeNearFarModeOverride() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR)
     {
         const std::array<osg::Vec3d, 8> c = frustumCorners(osg::Matrixd(), projection);
         zNear = -c[0].z(), zFar = -c[4].z();
@@ -1589,6 +1606,13 @@ std::vector<osg::Vec3d> SilhouetteShadowTechnique::visibleReceiverRegion(osgUtil
             zNear = std::min(zNear, z), zFar = std::max(zFar, z);
         }
         zNear = std::max(zNear, 0.0);
+    }
+    if (_maximumShadowDistance < zFar && effectiveModeFor(cv) != SHADOW_VOLUME)
+    {
+        // ShadowSettings' MaximumShadowMapDistance: the maps cover the eye range up to it,
+        // as in ViewDependentShadowMap; beyond, the receivers fall outside them (lit). A
+        // distance before the near plane leaves nothing to cover.
+        zFar = _maximumShadowDistance;
     }
     if (!(zNear <= zFar) || !std::isfinite(zNear) || !std::isfinite(zFar) || zFar <= 0.0) return {}; // nothing visible
     zNear = std::max(zNear, zFar * 1e-6);

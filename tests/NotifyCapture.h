@@ -29,6 +29,14 @@ public:
         return _handler->warnings;
     }
     bool warned(const std::string& part) const { return warnings().find(part) != std::string::npos; }
+    /** How many times @p part occurs in warnings(). */
+    int count(const std::string& part) const
+    {
+        const std::string all = warnings();
+        int n = 0;
+        for (std::size_t at = all.find(part); at != std::string::npos; at = all.find(part, at + part.size())) ++n;
+        return n;
+    }
 
 private:
     struct Handler : public osg::NotifyHandler

@@ -43,6 +43,10 @@ bool oss_silhouetteSample(sampler2D depthMap, mat4 eyeToShadow, vec4 eyePosition
     vec3 t = c.xyz / c.w;
     s.depthSlope = oss_depthSlope(t);
     t.z -= oss_lookupBias(eyeToShadow, c, eyePosition);
+    // Beyond the map's far plane compares as at it, as the other modes' hardware comparison
+    // clamps its reference: lit where the map holds no caster (a receiver past
+    // MaximumShadowMapDistance, outside the map).
+    t.z = min(t.z, 1.0);
     s.coord = t;
     s.texel = ivec2(0);
     s.local = vec2(0.5);
