@@ -383,6 +383,7 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _maxShadowLights(copy._maxShadowLights),
       _baseTextureUnit(copy._baseTextureUnit),
       _useDefaultShading(copy._useDefaultShading),
+      _perPixelLighting(copy._perPixelLighting),
       _debugView(copy._debugView),
       _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling),
@@ -497,6 +498,11 @@ void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
 {
     _useDefaultShading = flag;
     dirty();
+}
+
+void SilhouetteShadowTechnique::setPerPixelLighting(bool flag)
+{
+    _perPixelLighting = flag;
 }
 
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
@@ -653,6 +659,16 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->addShader(_shadowFragmentShader.get());
     _stencilProgram->addShader(_silhouetteFragmentShader.get());
     _stencilProgram->addShader(listTerm.get());
+    // The lighting equation in the receivers' vertex and fragment stages, one source
+    // (PerPixelLighting chooses where it runs).
+    for (const osg::ref_ptr<osg::Shader>& lighting :
+         {detail::loadShader(osg::Shader::VERTEX, shader::FILE_LIGHTING),
+          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_LIGHTING),
+          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_FRAGMENT_LIGHTING)})
+    {
+        _receiverProgram->addShader(lighting.get());
+        _stencilProgram->addShader(lighting.get());
+    }
     _volumeProgram = new osg::Program;
     _volumeProgram->setName("osgShadowSilhouette shadow volumes");
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
@@ -1519,6 +1535,7 @@ void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
 {
     const bool silhouette = getEffectiveMode() == SILHOUETTE_MAP;
     const std::pair<const char*, bool> defines[] = {
+        {shader::DEFINE_PER_PIXEL_LIGHTING, _perPixelLighting},
         {shader::DEFINE_DEBUG_MASK, _debugView == DEBUG_SHADOW_MASK},
         {shader::DEFINE_DEBUG_CLASSES, _debugView == DEBUG_CLASSES},
         {shader::DEFINE_SILHOUETTE_MAP, silhouette},
