@@ -174,6 +174,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     a.read("--classes", o.classes);
     if (!readOnOff(a, "--blocker-culling", o.blockerCulling, error)) return false;
     if (!readOnOff(a, "--hybrid-edges", o.hybridEdgeMask, error)) return false;
+    if (!readOnOff(a, "--per-pixel-lighting", o.perPixelLighting, error)) return false;
     if (!readOnOff(a, "--skip-empty-faces", o.skipEmptyFaces, error)) return false;
     if (a.read("--hybrid-method", o.hybridMethod) && o.hybridMethod != "auto" && o.hybridMethod != "stencil" &&
         o.hybridMethod != "lists")
@@ -229,7 +230,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
       << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
-      << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F] [--skip-empty-faces on|off]\n"
+      << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F] [--skip-empty-faces on|off] [--per-pixel-lighting on|off]\n"
       << "    [--moving-light] [--ground] [--check-gl-errors]\n";
     return s.str();
 }

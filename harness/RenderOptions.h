@@ -47,6 +47,7 @@ struct RenderOptions
     double referenceOffset = -1.0;    ///< --reference-offset S: the reference's offset scale (negative: ossref's default)
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
+    bool perPixelLighting = true;     ///< --per-pixel-lighting on|off (the property PerPixelLighting)
     bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::setEmptyFaceSkipping())
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace osgShadowSilhouette {
 
@@ -16,6 +17,15 @@ bool finite(const osg::Vec3d& v)
 bool finite(const osg::Vec4d& v)
 {
     return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()) && std::isfinite(v.w());
+}
+
+/** "x, y, z[, w]", as OSG_WARN writes numbers ("nan", "inf"). */
+template<typename V>
+std::string listed(const V& v)
+{
+    std::ostringstream text;
+    for (int i = 0; i < V::num_components; ++i) text << (i ? ", " : "") << float(v[i]);
+    return text.str();
 }
 
 /** Any unit vector orthogonal to d (d need not be normalized). */
@@ -125,26 +135,37 @@ osg::Vec4d LightDescription::homogeneous() const
     return type == DIRECTIONAL ? osg::Vec4d(direction, 0.0) : osg::Vec4d(position, 1.0);
 }
 
-bool LightDescription::fromLight(const osg::Light& light, const osg::Matrixd& lightToWorld, LightDescription& out)
+bool LightDescription::fromLight(const osg::Light& light, const osg::Matrixd& lightToWorld, LightDescription& out,
+                                 std::string* refusal)
 {
     const osg::Vec4d p(light.getPosition());
-    if (!finite(p)) return false;
+    const osg::Vec3d localAxis(light.getDirection());
+    const double cutoff = light.getSpotCutoff();
+    const bool cone = cutoff >= 0.0 && cutoff <= 90.0; // OpenGL's spot cone (GL_SPOT_CUTOFF)
+    const auto refuse = [&](const char* field, const std::string& value, const char* why) {
+        if (refusal) *refusal = std::string(field) + " (" + value + ")" + why;
+        return false;
+    };
+    if (!finite(p)) return refuse("position", listed(p), "");
+    if (cone && !finite(localAxis)) return refuse("spot direction", listed(localAxis), "");
     LightDescription d;
     d.lightNum = light.getLightNum();
     if (p.w() == 0.0)
     {
         d.type = DIRECTIONAL;
         d.direction = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), lightToWorld);
-        if (!finite(d.direction) || d.direction.length2() == 0.0) return false;
+        if (!finite(d.direction)) return refuse("position", listed(p), " placed by a non-finite transform");
+        if (d.direction.length2() == 0.0) return refuse("position", listed(p), ", a direction of length 0");
         d.direction.normalize();
     }
     else
     {
         d.position = osg::Vec3d(p.x() / p.w(), p.y() / p.w(), p.z() / p.w()) * lightToWorld;
-        if (!finite(d.position)) return false;
-        const double cutoff = light.getSpotCutoff();
-        const osg::Vec3d axis = osg::Matrixd::transform3x3(osg::Vec3d(light.getDirection()), lightToWorld);
-        d.type = (cutoff < 90.0 && cutoff >= 0.0 && finite(axis) && axis.length2() > 0.0) ? SPOT : POINT;
+        if (!finite(d.position)) return refuse("position", listed(p), " placed by a non-finite transform");
+        const osg::Vec3d axis = osg::Matrixd::transform3x3(localAxis, lightToWorld);
+        if (cone && !finite(axis))
+            return refuse("spot direction", listed(localAxis), " placed by a non-finite transform");
+        d.type = (cone && cutoff < 90.0 && axis.length2() > 0.0) ? SPOT : POINT;
         if (d.type == SPOT)
         {
             d.spotDirection = axis;

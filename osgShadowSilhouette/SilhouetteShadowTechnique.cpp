@@ -8,6 +8,7 @@
 #include <osg/ColorMask>
 #include <osg/Depth>
 #include <osg/ComputeBoundsVisitor>
+#include <osg/LightSource>
 #include <osg/BufferIndexBinding>
 #include <osg/CullFace>
 #include <osg/GLExtensions>
@@ -69,7 +70,6 @@ enum WarningKey
     WARN_MODE_UNAVAILABLE = 1,
     WARN_OVER_BUDGET,
     WARN_NO_LIGHT,
-    WARN_BAD_LIGHT,
     WARN_MAP_SIZE,
     WARN_NO_STENCIL,
     WARN_FACE_SLOTS,
@@ -385,6 +385,7 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _maxShadowLights(copy._maxShadowLights),
       _baseTextureUnit(copy._baseTextureUnit),
       _useDefaultShading(copy._useDefaultShading),
+      _perPixelLighting(copy._perPixelLighting),
       _debugView(copy._debugView),
       _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling),
@@ -504,6 +505,11 @@ void SilhouetteShadowTechnique::setUseDefaultShading(bool flag)
     dirty();
 }
 
+void SilhouetteShadowTechnique::setPerPixelLighting(bool flag)
+{
+    _perPixelLighting = flag;
+}
+
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
 {
     _properties.debugView = (view >= DEBUG_NONE && view <= DEBUG_CLASSES) ? view : DEBUG_NONE;
@@ -592,6 +598,33 @@ void SilhouetteShadowTechnique::warnNonFinite(const osg::Drawable& drawable) con
              << "\" has vertices with NaN or infinite coordinates; it casts no shadow" << std::endl;
 }
 
+void SilhouetteShadowTechnique::warnRefusedLight(osgUtil::CullVisitor& cv, const osg::Light& light,
+                                                 const std::string& refusal) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
+    if (!_warnedLights.insert(&light).second) return;
+    struct FindSource : public osg::NodeVisitor
+    {
+        explicit FindSource(const osg::Light* l) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), light(l)
+        {
+            setNodeMaskOverride(~0u);
+        }
+        void apply(osg::LightSource& ls) override
+        {
+            if (ls.getLight() == light && !found) found = &ls;
+            traverse(ls);
+        }
+        const osg::Light* light;
+        const osg::LightSource* found = nullptr;
+    } find(&light);
+    if (!cv.getNodePath().empty()) cv.getNodePath().front()->accept(find);
+    const std::string source = !find.found                   ? "no LightSource found"
+                               : find.found->getName().empty() ? "an unnamed LightSource"
+                                                               : "LightSource \"" + find.found->getName() + "\"";
+    OSG_WARN << "osgShadowSilhouette: light " << light.getLightNum() << " (" << source << ") has a non-finite "
+             << refusal << "; it lights nothing and casts no shadow" << std::endl;
+}
+
 void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
@@ -625,6 +658,16 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
     addShadowShaders(_stencilProgram.get());
+    // The lighting equation in the receivers' vertex and fragment stages, one source
+    // (PerPixelLighting chooses where it runs).
+    for (const osg::ref_ptr<osg::Shader>& lighting :
+         {detail::loadShader(osg::Shader::VERTEX, shader::FILE_LIGHTING),
+          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_LIGHTING),
+          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_FRAGMENT_LIGHTING)})
+    {
+        _receiverProgram->addShader(lighting.get());
+        _stencilProgram->addShader(lighting.get());
+    }
     _volumeProgram = new osg::Program;
     _volumeProgram->setName("osgShadowSilhouette shadow volumes");
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
@@ -878,7 +921,18 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     // pass state set gets the stencil modes' lighting program once the method is known.
     cullReceivers(cv, vd, vd.receiverPassStateSet.get());
 
-    const std::vector<FoundLight> lights = collectLights(cv);
+    std::vector<int> refused;
+    const std::vector<FoundLight> lights = collectLights(cv, refused);
+    // The receiver shading lights only the lights found (oss_lightIndex); drawables under a
+    // program of their own, or all with UseDefaultShading false, are lit by OpenGL, which
+    // would spread a refused light's NaN: its GL light is turned off for them.
+    for (int num = 0; num < shader::MAX_SCENE_LIGHTS; ++num)
+    {
+        if (std::find(refused.begin(), refused.end(), num) != refused.end())
+            vd.receiverStateSet->setMode(GL_LIGHT0 + num, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+        else
+            vd.receiverStateSet->removeMode(GL_LIGHT0 + num);
+    }
     Statistics stats;
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
@@ -1510,6 +1564,7 @@ void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
 {
     const bool silhouette = getEffectiveMode() == SILHOUETTE_MAP;
     const std::pair<const char*, bool> defines[] = {
+        {shader::DEFINE_PER_PIXEL_LIGHTING, _perPixelLighting},
         {shader::DEFINE_DEBUG_MASK, _debugView == DEBUG_SHADOW_MASK},
         {shader::DEFINE_DEBUG_CLASSES, _debugView == DEBUG_CLASSES},
         {shader::DEFINE_SILHOUETTE_MAP, silhouette},
@@ -1540,7 +1595,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
 }
 
 std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::collectLights(
-    osgUtil::CullVisitor& cv) const
+    osgUtil::CullVisitor& cv, std::vector<int>& refused) const
 {
     std::vector<FoundLight> lights;
     osgUtil::RenderStage* stage = cv.getCurrentRenderBin()->getStage();
@@ -1558,21 +1613,19 @@ std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::co
             attrMatrix.second.valid() ? osg::Matrixd(*attrMatrix.second) * eyeToWorld : eyeToWorld;
         FoundLight found;
         found.light = light;
-        if (!LightDescription::fromLight(*light, lightToWorld, found.description))
-        {
-            warnOnce(WARN_BAD_LIGHT, "light " + std::to_string(light->getLightNum()) +
-                                         " has a non-finite position or direction; it casts no shadow");
-            continue;
-        }
-        if (light->getLightNum() >= shader::MAX_SCENE_LIGHTS) continue;
+        std::string refusal;
+        const bool usable = LightDescription::fromLight(*light, lightToWorld, found.description, &refusal);
+        if (!usable) warnRefusedLight(cv, *light, refusal);
         // Positional state is applied in this order, so of two lights with one number (say
         // the viewer's headlight and the scene's light 0) the last is the one GL lights with.
-        auto same = std::find_if(lights.begin(), lights.end(), [&](const FoundLight& l) {
-            return l.description.lightNum == found.description.lightNum;
-        });
-        if (same != lights.end())
-            *same = found;
-        else
+        const int num = light->getLightNum();
+        lights.erase(std::remove_if(lights.begin(), lights.end(),
+                                    [&](const FoundLight& l) { return l.description.lightNum == num; }),
+                     lights.end());
+        refused.erase(std::remove(refused.begin(), refused.end(), num), refused.end());
+        if (!usable)
+            refused.push_back(num);
+        else if (num < shader::MAX_SCENE_LIGHTS)
             lights.push_back(found);
     }
     std::sort(lights.begin(), lights.end(), [](const FoundLight& a, const FoundLight& b) {

@@ -108,6 +108,7 @@ int main(int argc, char** argv)
     {
         technique->setBlockerCulling(options.blockerCulling);
         technique->setHybridEdgeMask(options.hybridEdgeMask);
+        technique->setPerPixelLighting(options.perPixelLighting);
         SilhouetteShadowTechnique::setEmptyFaceSkipping(options.skipEmptyFaces);
         technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
                                    : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF

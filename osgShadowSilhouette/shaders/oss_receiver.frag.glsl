@@ -28,8 +28,9 @@
 
 in vec4 oss_eyePosition;
 in vec4 oss_texCoord0;
-in vec4 oss_unshadowedColor;
-in vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
+// Emission, ambients and unshadowed lights; shadowed[s]: the diffuse + specular of shadow
+// slot s, per vertex or per pixel (oss_fragment_lighting.frag.glsl).
+vec4 oss_fragmentLighting(out vec3 shadowed[OSS_MAX_SHADOW_LIGHTS]);
 
 uniform int oss_numLights;
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
@@ -103,6 +104,8 @@ void main()
 #else
 void main()
 {
+    vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
+    vec4 oss_unshadowedColor = oss_fragmentLighting(oss_shadowedColor);
     vec3 color = oss_unshadowedColor.rgb;
 #ifdef OSS_TRIANGLE_LISTS
     bool oss_walkLight[OSS_MAX_SHADOW_LIGHTS];

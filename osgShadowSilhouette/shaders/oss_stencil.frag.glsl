@@ -32,8 +32,9 @@
 
 in vec4 oss_eyePosition;
 in vec4 oss_texCoord0;
-in vec4 oss_unshadowedColor;
-in vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
+// Emission, ambients and unshadowed lights; shadowed[s]: the diffuse + specular of shadow
+// slot s, per vertex or per pixel (oss_fragment_lighting.frag.glsl).
+vec4 oss_fragmentLighting(out vec3 shadowed[OSS_MAX_SHADOW_LIGHTS]);
 
 uniform sampler2D oss_baseTexture;
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
@@ -73,6 +74,8 @@ vec4 oss_textured(vec4 color)
 
 void main()
 {
+    vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
+    vec4 oss_unshadowedColor = oss_fragmentLighting(oss_shadowedColor);
 #if defined(OSS_HYBRID_MASK)
     float pcf = oss_lightPcf(OSS_HYBRID_MASK, oss_eyePosition);
     bool uncertain = pcf > 0.0 && pcf < 1.0;

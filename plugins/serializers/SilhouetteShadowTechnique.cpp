@@ -61,4 +61,5 @@ REGISTER_OBJECT_WRAPPER(osgShadowSilhouette_SilhouetteShadowTechnique,
     END_ENUM_SERIALIZER();
 
     OSS_ADD_PROPERTY(float, ShadowRayOffset, 1e-6f);
+    OSS_ADD_PROPERTY(bool, PerPixelLighting, true);
 }

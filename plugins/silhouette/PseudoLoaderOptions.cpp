@@ -122,12 +122,13 @@ bool applyOne(const std::string& key, const std::string& value, SilhouetteShadow
         else if (m == "off" || m == "depth_prepass_off") t.setDepthPrepass(SilhouetteShadowTechnique::DEPTH_PREPASS_OFF);
         else warnValue(key, value, "is not auto, on or off; ignored");
     }
-    else if (k == "usedefaultshading" || k == "blockerculling" || k == "hybridedgemask")
+    else if (k == "usedefaultshading" || k == "blockerculling" || k == "hybridedgemask" || k == "perpixellighting")
     {
         bool flag = true;
         if (!parseBool(value, flag)) warnValue(key, value, "is not on/off; ignored");
         else if (k == "usedefaultshading") t.setUseDefaultShading(flag);
         else if (k == "blockerculling") t.setBlockerCulling(flag);
+        else if (k == "perpixellighting") t.setPerPixelLighting(flag);
         else t.setHybridEdgeMask(flag);
     }
     else return false;
@@ -151,6 +152,7 @@ const std::vector<OptionDescription>& optionDescriptions()
         {"PolygonOffsetFactor=<f>", "Slope-scaled depth bias (negative: automatic, 2 in HYBRID with its edge mask, else 1.1)"},
         {"PolygonOffsetUnits=<f>", "Constant depth bias"},
         {"UseDefaultShading=<on|off>", "Whether the technique installs its receiver shading"},
+        {"PerPixelLighting=<on|off>", "Light the receivers per pixel (on) or per vertex, as the fixed function"},
         {"BlockerCulling=<on|off>", "HYBRID: skip the volumes of casters hidden from the light"},
         {"HybridMethod=<auto|stencil|lists>", "HYBRID: silhouette pixels by stencil-masked volumes or triangle lists"},
         {"HybridEdgeMask=<on|off>", "HYBRID: also resolve exactly the pixels a silhouette edge crosses"},

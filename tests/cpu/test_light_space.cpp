@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 using namespace osgShadowSilhouette;
 
@@ -272,6 +273,33 @@ TEST(LightDescription, NonFiniteLightIsRefused)
     EXPECT_EQ(d.lightNum, 7); // untouched
     light.setPosition(osg::Vec4(0, 0, 0, 0));
     EXPECT_FALSE(LightDescription::fromLight(light, osg::Matrixd(), d));
+}
+
+TEST(LightDescription, RefusalNamesTheValue)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    osg::ref_ptr<osg::Light> light = new osg::Light;
+    LightDescription d;
+    std::string why;
+    light->setPosition(osg::Vec4(1, nan, 6, 1));
+    EXPECT_FALSE(LightDescription::fromLight(*light, osg::Matrixd(), d, &why));
+    EXPECT_EQ(why, "position (1, nan, 6, 1)");
+    light->setPosition(osg::Vec4(0, 0, 0, 0));
+    EXPECT_FALSE(LightDescription::fromLight(*light, osg::Matrixd(), d, &why));
+    EXPECT_EQ(why, "position (0, 0, 0, 0), a direction of length 0");
+    light->setPosition(osg::Vec4(0, 0, 5, 1));
+    EXPECT_FALSE(LightDescription::fromLight(*light, osg::Matrixd::scale(1, 1, std::numeric_limits<double>::infinity()), d, &why));
+    EXPECT_EQ(why, "position (0, 0, 5, 1) placed by a non-finite transform");
+    // A spot direction counts where OpenGL reads it: spot cutoffs 0 to 90.
+    light->setDirection(osg::Vec3(0, nan, -1));
+    light->setSpotCutoff(90);
+    EXPECT_FALSE(LightDescription::fromLight(*light, osg::Matrixd(), d, &why));
+    EXPECT_EQ(why, "spot direction (0, nan, -1)");
+    light->setSpotCutoff(180);
+    why.clear();
+    ASSERT_TRUE(LightDescription::fromLight(*light, osg::Matrixd(), d, &why));
+    EXPECT_EQ(d.type, LightDescription::POINT);
+    EXPECT_EQ(why, "");
 }
 
 namespace {

@@ -45,7 +45,7 @@ class RefusedLines : public ::testing::TestWithParam<BadLine>
 TEST(RenderOptions, AGoodLineParses)
 {
     const Parsed p = parse({"model.osgt", "--mode", "hybrid", "--map-size", "512", "--frames", "3", "--light-dir", "0",
-                            "-1", "2", "--offscreen", "--ground"});
+                            "-1", "2", "--offscreen", "--ground", "--per-pixel-lighting", "off"});
     ASSERT_TRUE(p.ok) << p.error;
     EXPECT_EQ(p.options.file, "model.osgt");
     EXPECT_EQ(p.options.mode, "hybrid");
@@ -55,6 +55,7 @@ TEST(RenderOptions, AGoodLineParses)
     EXPECT_EQ(p.options.lights[0].vector, osg::Vec3d(0, -1, 2));
     EXPECT_TRUE(p.options.offscreen);
     EXPECT_TRUE(p.options.ground);
+    EXPECT_FALSE(p.options.perPixelLighting);
 }
 
 TEST_P(RefusedLines, WithAMessageNamingTheProblem)

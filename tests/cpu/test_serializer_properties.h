@@ -56,6 +56,7 @@ inline const std::vector<PropertyRow>& propertyRows()
         OSS_PROPERTY_ROW(HybridEdgeMask, false),
         OSS_PROPERTY_ROW(DepthPrepass, Technique::DEPTH_PREPASS_OFF),
         OSS_PROPERTY_ROW(ShadowRayOffset, 2.5e-4f),
+        OSS_PROPERTY_ROW(PerPixelLighting, false),
     };
     return rows;
 }

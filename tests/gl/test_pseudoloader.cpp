@@ -187,7 +187,7 @@ TEST(PseudoLoader, AppliesTheOptionString)
         modelWithoutLight() + ".silhouette",
         "ShadowMapSize=1024 Mode=volume DebugView=mask DebugLight=0 LightNum=0 MaxShadowLights=2 "
         "BaseTextureUnit=6 PolygonOffsetFactor=2 PolygonOffsetUnits=8 UseDefaultShading=off ShadowRayOffset=3e-5 "
-        "SomeOtherPlugin=1");
+        "PerPixelLighting=off SomeOtherPlugin=1");
     Technique* t = techniqueOf(scene.get());
     ASSERT_NE(t, nullptr);
     EXPECT_EQ(t->getShadowMapSize(), 1024u);
@@ -200,6 +200,7 @@ TEST(PseudoLoader, AppliesTheOptionString)
     EXPECT_FLOAT_EQ(t->getPolygonOffsetUnits(), 8.0f);
     EXPECT_FALSE(t->getUseDefaultShading());
     EXPECT_FLOAT_EQ(t->getShadowRayOffset(), 3e-5f);
+    EXPECT_FALSE(t->getPerPixelLighting());
 }
 
 TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)

@@ -1,15 +1,21 @@
 // Every mode shades a lit pixel alike: outside shadows, the picture does not depend on the
 // mode, whether the model brings an osg::Material, vertex colours, a texture, or none of
-// them. (The stencil modes light in additive passes, the map modes in one: both must be the
-// fixed-function lighting of the same surface.)
+// them, with the lighting per pixel or per vertex (PerPixelLighting). (The stencil modes
+// light in additive passes, the map modes in one: both must be the fixed-function lighting
+// of the same surface.) And a spot light's lit disc on a ground of four vertices shows with
+// the lighting per pixel, not per vertex.
 #include "GLTestSupport.h"
 #include "Meshes.h"
 
+#include <osg/Geode>
 #include <osg/Material>
 #include <osg/Texture2D>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <tuple>
 
 using osstest::ShadowedRender;
 
@@ -98,12 +104,13 @@ struct Frame
     ossref::Mask mask;
 };
 
-Frame render(Look look, const std::string& mode)
+Frame render(Look look, const std::string& mode, bool perPixel)
 {
     osshar::RenderOptions options;
     ShadowedRender r(options, mode, 2048, 320, 240);
     Frame f;
     if (!r.valid()) return f;
+    r.technique->setPerPixelLighting(perPixel);
     r.scene.content->removeChildren(0, r.scene.content->getNumChildren());
     r.scene.content->addChild(dressedScene(look).get());
     r.renderer->setView({osg::Vec3d(3, -11, 7), osg::Vec3d(0, 0, 0.5), osg::Vec3d(0, 0, 1), 40.0});
@@ -128,8 +135,13 @@ bool litAround(const ossref::Mask& mask, int i)
     return true;
 }
 
-class ShadingParity : public ::testing::TestWithParam<Look>
+class ShadingParity : public ::testing::TestWithParam<std::tuple<Look, bool>>
 {
+protected:
+    Frame render(const std::string& mode) const
+    {
+        return ::render(std::get<0>(GetParam()), mode, std::get<1>(GetParam()));
+    }
 };
 
 /** Largest channel difference between two frames over the pixels lit, with their
@@ -156,11 +168,11 @@ int largestLitDifference(const Frame& a, const Frame& b, long long& compared, lo
 
 TEST_P(ShadingParity, LitPixelsAgreeInEveryMode)
 {
-    const Frame base = render(GetParam(), "volume");
+    const Frame base = render("volume");
     ASSERT_TRUE(base.colour.valid());
     for (const char* mode : {"silhouette", "hybrid"})
     {
-        const Frame other = render(GetParam(), mode);
+        const Frame other = render(mode);
         ASSERT_TRUE(other.colour.valid());
         long long compared = 0, differing = 0;
         const int worst = largestLitDifference(base, other, compared, differing);
@@ -176,8 +188,8 @@ TEST_P(ShadingParity, LitPixelsAgreeInEveryMode)
 // thresholds the PCF at 0.5, calls them lit. The test holds the defect to what it is.
 TEST_P(ShadingParity, ShadowMapDarkensLitSlopesAtMostAsMeasured)
 {
-    const Frame base = render(GetParam(), "volume");
-    const Frame other = render(GetParam(), "shadowmap");
+    const Frame base = render("volume");
+    const Frame other = render("shadowmap");
     ASSERT_TRUE(base.colour.valid() && other.colour.valid());
     long long compared = 0, differing = 0;
     const int worst = largestLitDifference(base, other, compared, differing);
@@ -188,11 +200,124 @@ TEST_P(ShadingParity, ShadowMapDarkensLitSlopesAtMostAsMeasured)
                      << " of 255 (acne of the 2x2 footprint on lit slopes)";
 }
 
-std::string lookName(const ::testing::TestParamInfo<Look>& info)
+std::string lookName(const ::testing::TestParamInfo<std::tuple<Look, bool>>& info)
 {
     static const char* const names[] = {"Nothing", "Material", "VertexColours", "Texture"};
-    return names[int(info.param)];
+    return std::string(names[int(std::get<0>(info.param))]) + (std::get<1>(info.param) ? "_PerPixel" : "_PerVertex");
 }
 
 INSTANTIATE_TEST_SUITE_P(Looks, ShadingParity,
-                         ::testing::Values(Look::NOTHING, Look::MATERIAL, Look::VERTEX_COLOURS, Look::TEXTURE), lookName);
+                         ::testing::Combine(::testing::Values(Look::NOTHING, Look::MATERIAL, Look::VERTEX_COLOURS,
+                                                              Look::TEXTURE),
+                                            ::testing::Bool()),
+                         lookName);
+
+namespace {
+
+constexpr double SPOT_HEIGHT = 4.0, SPOT_CUTOFF_DEG = 20.0, GROUND_SIDE = 12.0;
+
+/** A white ground of four vertices (12 x 12, at z = 0; OpenGL's default material: ambient
+ *  0.2, diffuse 0.8, no specular) under a spot light 4 above its centre,
+ *  aiming down with a 20 degree cone: the lit disc, of radius 4 tan 20 = 1.456, holds none of
+ *  the vertices. Seen from straight above. */
+osshar::PreparedScene spotOverCoarseGround()
+{
+    osshar::PreparedScene scene;
+    scene.content = new osg::Group;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    osg::ref_ptr<osg::Geometry> ground = osshar::makeGround(0, 0, float(GROUND_SIDE));
+    osg::ref_ptr<osg::Vec4Array> white = new osg::Vec4Array;
+    white->push_back(osg::Vec4(1, 1, 1, 1));
+    ground->setColorArray(white.get(), osg::Array::BIND_OVERALL);
+    osg::ref_ptr<osg::Material> material = new osg::Material; // OpenGL's default material
+    material->setColorMode(osg::Material::OFF);
+    material->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.2f, 0.2f, 0.2f, 1));
+    material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.8f, 0.8f, 0.8f, 1));
+    material->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
+    ground->getOrCreateStateSet()->setAttributeAndModes(material.get());
+    geode->addDrawable(ground.get());
+    scene.content->addChild(geode.get());
+    osg::ref_ptr<osg::LightSource> spot = osshar::makeLight(osg::Vec4(0, 0, float(SPOT_HEIGHT), 1));
+    spot->getLight()->setDirection(osg::Vec3(0, 0, -1));
+    spot->getLight()->setSpotCutoff(float(SPOT_CUTOFF_DEG));
+    scene.content->addChild(spot.get());
+    scene.lights = osshar::findLights(scene.content.get());
+    scene.view = {osg::Vec3d(0, 0, 14), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0), 40.0};
+    return scene;
+}
+
+/** The ground's pixels by their distance d from the spot's foot (where their view ray meets
+ *  z = 0): the lowest and highest red values of those with d < 0.95 R (inside the cone), the
+ *  highest of those with d > 1.05 R on the ground (outside), and the number of each. */
+struct Disc
+{
+    int darkestInside = 255, brightestInside = 0, brightestOutside = 0;
+    long long inside = 0, outside = 0;
+};
+
+Disc measureDisc(const osg::Image& image, const osshar::View& view)
+{
+    const double radius = SPOT_HEIGHT * std::tan(osg::DegreesToRadians(SPOT_CUTOFF_DEG));
+    const int w = image.s(), h = image.t();
+    const osg::Matrixd toWindow = osg::Matrixd::lookAt(view.eye, view.center, view.up) *
+                                  osg::Matrixd::perspective(view.fovy, double(w) / h, 0.1, 1000.0) *
+                                  osg::Matrixd::translate(1, 1, 1) * osg::Matrixd::scale(0.5 * w, 0.5 * h, 0.5);
+    const osg::Matrixd toWorld = osg::Matrixd::inverse(toWindow);
+    const unsigned int bytes = image.getPixelSizeInBits() / 8;
+    Disc disc;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+        {
+            const osg::Vec3d a = osg::Vec3d(x + 0.5, y + 0.5, 0.0) * toWorld;
+            const osg::Vec3d b = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toWorld;
+            const osg::Vec3d hit = a + (b - a) * (a.z() / (a.z() - b.z()));
+            const double d = std::hypot(hit.x(), hit.y());
+            const int red = image.data()[bytes * (std::size_t(y) * w + x)];
+            if (d < 0.95 * radius)
+                disc.darkestInside = std::min(disc.darkestInside, red),
+                disc.brightestInside = std::max(disc.brightestInside, red), ++disc.inside;
+            else if (d > 1.05 * radius && std::max(std::fabs(hit.x()), std::fabs(hit.y())) < 0.49 * GROUND_SIDE)
+                disc.brightestOutside = std::max(disc.brightestOutside, red), ++disc.outside;
+        }
+    return disc;
+}
+
+class SpotOnCoarseGround : public ::testing::TestWithParam<const char*>
+{
+};
+
+} // namespace
+
+// Inside the cone the spot (makeLight(): ambient 0.2, diffuse 0.8) adds its ambient, 0.2 x
+// the material's 0.2, and its diffuse, 0.8 x the material's 0.8 x N.L, where N.L is least at the edge of the judged disc
+// (0.95 R: cos atan(0.95 tan 20 deg) = 0.945): at least 0.645 of full scale, 164 of 255;
+// outside the cone it adds nothing. At the disc's centre (N.L = 1) it adds 0.68, 173 of 255.
+// Per vertex the four corners, all outside the cone, are lit alike and the disc does not show
+// at all.
+TEST_P(SpotOnCoarseGround, LitDiscShowsPerPixelNotPerVertex)
+{
+    for (bool perPixel : {true, false})
+    {
+        ShadowedRender r(spotOverCoarseGround(), GetParam(), 1024, 320, 240);
+        ASSERT_TRUE(r.valid());
+        r.technique->setPerPixelLighting(perPixel);
+        r.renderer->timeFrames(0, 2);
+        osg::ref_ptr<osg::Image> image = r.renderer->renderAndCapture();
+        const Disc disc = measureDisc(*image, r.scene.view);
+        ASSERT_GT(disc.inside, 2000) << "the disc is not in view";
+        ASSERT_GT(disc.outside, 20000) << "the ground around the disc is not in view";
+        const std::string seen = std::string(perPixel ? "per pixel" : "per vertex") + ": the disc's pixels " +
+                                 std::to_string(disc.darkestInside) + " to " + std::to_string(disc.brightestInside) +
+                                 ", the brightest around it " + std::to_string(disc.brightestOutside);
+        std::printf("%s %s\n", GetParam(), seen.c_str());
+        if (perPixel)
+        {
+            EXPECT_GE(disc.darkestInside - disc.brightestOutside, 164 - 2) << seen;
+            EXPECT_LE(disc.brightestInside - disc.brightestOutside, 173 + 2) << seen;
+        }
+        else
+            EXPECT_LE(std::max(disc.brightestInside, disc.brightestOutside) - disc.darkestInside, 1) << seen;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, SpotOnCoarseGround, ::testing::Values("shadowmap", "silhouette", "hybrid", "volume"));

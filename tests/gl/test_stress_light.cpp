@@ -2,6 +2,8 @@
 // against the exact reference within the bound of its mode.
 #include "StressSupport.h"
 
+#include <algorithm>
+#include <limits>
 #include <tuple>
 
 using namespace osstest;
@@ -164,6 +166,134 @@ TEST_P(StressMode, SpotLightWithAVeryWideCone)
     // A 178 degree frustum spreads the map's texels thin at its rim (measured 0.36, 0.21,
     // 0.19 and 0.002%).
     expectWithinBound(r, ModeBounds{0.75, 0.45, 0.4, 0.02}.of(GetParam()));
+}
+
+namespace {
+
+enum class BadValue
+{
+    POSITION,       ///< a point light at (1, NaN, 6)
+    DIRECTION,      ///< a directional light toward (NaN, 0.3, 0.8)
+    SPOT_DIRECTION, ///< a spot light at (-2, -5, 6) with a 40 degree cone about (0, NaN, -1)
+};
+
+/** Pixels of two captures of one size whose channels differ by more than 2 of 255. */
+long long differingPixels(const osg::Image& a, const osg::Image& b)
+{
+    const unsigned int bytes = a.getPixelSizeInBits() / 8;
+    long long differ = 0;
+    for (int i = 0; i < a.s() * a.t(); ++i)
+    {
+        int d = 0;
+        for (unsigned int c = 0; c < std::min(bytes, 3u); ++c)
+            d = std::max(d, std::abs(int(a.data()[bytes * i + c]) - int(b.data()[bytes * i + c])));
+        differ += d > 2;
+    }
+    return differ;
+}
+
+/** Occurrences of `part` in `text`. */
+int occurrences(const std::string& text, const std::string& part)
+{
+    int n = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+}
+
+/** A LightSource named "lamp" holding GL light `lightNum`, one of whose values is NaN. */
+osg::ref_ptr<osg::LightSource> nanLamp(BadValue bad, int lightNum)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    osg::ref_ptr<osg::LightSource> lamp = osshar::makeLight(osg::Vec4(-2, -5, 6, 1), lightNum);
+    lamp->setName("lamp");
+    osg::Light* light = lamp->getLight();
+    light->setDiffuse(osg::Vec4(1, 1, 1, 1));
+    if (bad == BadValue::POSITION) light->setPosition(osg::Vec4(1, nan, 6, 1));
+    if (bad == BadValue::DIRECTION) light->setPosition(osg::Vec4(nan, 0.3f, 0.8f, 0));
+    if (bad == BadValue::SPOT_DIRECTION) light->setDirection(osg::Vec3(0, nan, -1)), light->setSpotCutoff(40);
+    return lamp;
+}
+
+/** Adds `lamp` to r's content and checks what the technique does with it: one warning naming
+ *  the light, `named` (its value) and the outcome, and a picture the same as `without` (the
+ *  lamp lights nothing; with its NaN a pixel turns black). */
+void expectLampLeftOut(ShadowedRender& r, osg::LightSource* lamp, const osg::Image& without, const std::string& named)
+{
+    NotifyCapture notes;
+    r.scene.content->addChild(lamp);
+    r.renderer->timeFrames(0, 2);
+    osg::ref_ptr<osg::Image> with = r.renderer->renderAndCapture();
+    EXPECT_EQ(differingPixels(without, *with), 0) << "the light with a NaN changes the picture";
+    const std::string warnings = notes.warnings();
+    const std::string light = "light " + std::to_string(lamp->getLight()->getLightNum()) + " (LightSource \"lamp\")";
+    EXPECT_EQ(occurrences(warnings, light), 1) << warnings;
+    EXPECT_EQ(occurrences(warnings, named), 1) << warnings;
+    EXPECT_EQ(occurrences(warnings, "it lights nothing and casts no shadow"), 1) << warnings;
+}
+
+/** The default scene and a second light, GL light 1, one of whose values is NaN (a scene
+ *  file's): the technique leaves it out (expectLampLeftOut()), light 0's shadow is the
+ *  reference's and no NaN or Inf reaches the picture (expectWithinBound()). */
+void badLight(const char* mode, BadValue bad, const std::string& named)
+{
+    ShadowedRender r = stressRender(mode);
+    ASSERT_TRUE(r.valid());
+    lightOf(r); // the reference's lights: light 0 alone
+    r.renderer->timeFrames(0, 2);
+    osg::ref_ptr<osg::Image> without = r.renderer->renderAndCapture();
+    expectLampLeftOut(r, nanLamp(bad, 1).get(), *without, named);
+    expectWithinBound(r, TYPICAL.of(mode));
+}
+
+} // namespace
+
+TEST_P(StressMode, LightWithANaNPositionIsLeftOut)
+{
+    badLight(GetParam(), BadValue::POSITION, "position (1, nan, 6, 1)");
+}
+
+TEST_P(StressMode, DirectionalLightWithANaNDirectionIsLeftOut)
+{
+    badLight(GetParam(), BadValue::DIRECTION, "position (nan, 0.3, 0.8, 0)");
+}
+
+TEST_P(StressMode, SpotLightWithANaNDirectionIsLeftOut)
+{
+    badLight(GetParam(), BadValue::SPOT_DIRECTION, "spot direction (0, nan, -1)");
+}
+
+// The light with a NaN holds GL light 0, as the scene's light 0 does, and comes after it: GL
+// lights with its values, so light 0 lights nothing; the picture is the scene's without
+// light 0 (emission and the light model's ambient).
+TEST_P(StressMode, LightWithANaNTakesTheNumberOfAValidOne)
+{
+    ShadowedRender r = stressRender(GetParam());
+    ASSERT_TRUE(r.valid());
+    osg::ref_ptr<osg::LightSource> sun = lightOf(r) ? r.scene.lights.at(0).source : nullptr;
+    ASSERT_TRUE(sun.valid() && sun->getNumParents() == 1);
+    osg::Group* parent = sun->getParent(0);
+    parent->removeChild(sun.get());
+    r.renderer->timeFrames(0, 2);
+    osg::ref_ptr<osg::Image> without = r.renderer->renderAndCapture();
+    parent->addChild(sun.get());
+    expectLampLeftOut(r, nanLamp(BadValue::POSITION, 0).get(), *without, "position (1, nan, 6, 1)");
+    EXPECT_EQ(nonFiniteValues(*renderFloat(r, osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f))), 0) << "NaN or Inf in the picture";
+}
+
+// Without the receiver shading (UseDefaultShading false) OpenGL lights the scene, with the
+// lights the scene enables: the light with a NaN is turned off for the receivers, the others
+// stay on. (llvmpipe's fixed function happens to light nothing with that light's NaN; other
+// drivers blacken the picture.)
+TEST(StressLight, LightWithANaNIsTurnedOffForFixedFunctionLighting)
+{
+    ShadowedRender r = stressRender("shadowmap");
+    ASSERT_TRUE(r.valid());
+    r.technique->setUseDefaultShading(false);
+    for (int num : {0, 1}) r.scene.content->getOrCreateStateSet()->setMode(GL_LIGHT0 + num, osg::StateAttribute::ON);
+    r.renderer->timeFrames(0, 2);
+    osg::ref_ptr<osg::Image> without = r.renderer->renderAndCapture();
+    expectLampLeftOut(r, nanLamp(BadValue::POSITION, 1).get(), *without, "position (1, nan, 6, 1)");
+    EXPECT_EQ(nonFiniteValues(*renderFloat(r, osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f))), 0) << "NaN or Inf in the picture";
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, StressMode, ::testing::ValuesIn(STRESS_MODES));
