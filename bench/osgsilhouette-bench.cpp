@@ -3,8 +3,12 @@
  *
  *   osgsilhouette-bench [--scenes default,cubes,...] [--techniques shadowmap,osgShadow:ShadowMap,...]
  *       [--sizes 256,512,1024,2048,4096] [--technique-sizes TECHNIQUE=a,b,...] [--size W H]
- *       [--frames N] [--warmup N]
+ *       [--frames N] [--warmup N] [--per-pixel-lighting on|off]
  *       [--out-dir DIR] [--no-plot] [--list]
+ *
+ * Our modes light per vertex unless --per-pixel-lighting on (the property PerPixelLighting,
+ * on by default in the technique): osgShadow's techniques light per vertex, and per-pixel
+ * lighting is fragment work that is not shadow work.
  *
  * For each scene it builds the exact Embree reference once (one BVH, one mask per view), then
  * for each technique and map size renders offscreen, times the frames, reads the technique's
@@ -49,6 +53,7 @@ struct Options
     int frames = 20, warmup = 3;
     std::string outDir = "bench-out";
     bool plot = true;
+    bool perPixelLighting = false; ///< --per-pixel-lighting on|off: our modes' PerPixelLighting
 };
 
 struct Row
@@ -114,7 +119,7 @@ void usage(const char* program)
     std::cout << "usage: " << program
               << " [--scenes a,b] [--techniques x,y] [--sizes 256,512,...]\n"
                  "       [--technique-sizes TECHNIQUE=a,b,... (repeatable)] [--size W H] [--frames N]\n"
-                 "       [--warmup N] [--out-dir DIR] [--no-plot] [--list]\n"
+                 "       [--warmup N] [--per-pixel-lighting on|off] [--out-dir DIR] [--no-plot] [--list]\n"
                  "Scenes: ";
     for (const std::string& s : osshar::sceneNames()) std::cout << s << " ";
     std::cout << "\nTechniques: ";
@@ -143,6 +148,12 @@ bool parseOptions(osg::ArgumentParser& a, Options& o, std::string& error)
     a.read("--warmup", o.warmup);
     a.read("--out-dir", o.outDir);
     if (a.read("--no-plot")) o.plot = false;
+    std::string lighting;
+    if (a.read("--per-pixel-lighting", lighting))
+    {
+        if (lighting != "on" && lighting != "off") return error = "--per-pixel-lighting takes on or off", false;
+        o.perPixelLighting = lighting == "on";
+    }
     if (o.techniques.empty()) o.techniques = availableTechniques();
     if (o.width < 1 || o.height < 1 || o.frames < 1 || o.warmup < 0 || o.scenes.empty() || o.sizes.empty())
     {
@@ -214,6 +225,7 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
     osg::ref_ptr<SilhouetteShadowTechnique> ours;
     if (!osshar::prepareScene(ro, scene, error) || !osshar::makeShadowedRoot(technique, mapSize, scene, root, ours, error))
         return false;
+    if (ours) ours->setPerPixelLighting(o.perPixelLighting);
     renderer.setSceneData(root.get());
     renderer.setView(scene.view);
     const osshar::FrameTiming timing = renderer.timeFrames(o.warmup, o.frames);
