@@ -194,7 +194,10 @@ int main(int argc, char** argv)
     {
         ossref::Mask mask, reference;
         osshar::PeerMask peerMask;
-        if (!options.mask.empty() || !options.compare.empty() || !options.diff.empty() || !options.reference.empty())
+        // A mask is rendered for --mask, --compare and --diff, and for --reference to score
+        // it; --mode none with --reference alone writes the reference only.
+        const bool maskWanted = !options.mask.empty() || !options.compare.empty() || !options.diff.empty();
+        if (maskWanted || (!options.reference.empty() && (peer || technique)))
         {
             if (peer)
             {
