@@ -1,13 +1,39 @@
 #include "ShaderSource.h"
 
+#include <osgShadowSilhouette/ShaderConstants>
+
 #include <osg/Notify>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 
+#include <algorithm>
 #include <cstring>
+#include <sstream>
 
 namespace osgShadowSilhouette {
 namespace detail {
+
+std::string shaderPrelude()
+{
+    std::ostringstream s;
+    s << "// osgShadowSilhouette: ShaderConstants\n"
+      << "#define OSS_MAX_SCENE_LIGHTS " << shader::MAX_SCENE_LIGHTS << "\n";
+    return s.str();
+}
+
+std::string withPrelude(const std::string& source)
+{
+    std::size_t at = 0, line = 1;
+    const std::size_t version = source.find("#version");
+    if (version != std::string::npos && source.find_first_not_of(" \t\r\n", 0) == version)
+    {
+        const std::size_t end = source.find('\n', version);
+        if (end == std::string::npos) return source + "\n" + shaderPrelude();
+        at = end + 1;
+        line = 1 + std::size_t(std::count(source.begin(), source.begin() + at, '\n'));
+    }
+    return source.substr(0, at) + shaderPrelude() + "#line " + std::to_string(line) + "\n" + source.substr(at);
+}
 
 osg::ref_ptr<osg::Shader> loadShader(osg::Shader::Type type, const std::string& name)
 {
@@ -18,6 +44,7 @@ osg::ref_ptr<osg::Shader> loadShader(osg::Shader::Type type, const std::string& 
         if (shader.valid())
         {
             OSG_INFO << "osgShadowSilhouette: shader " << name << " read from " << path << std::endl;
+            shader->setShaderSource(withPrelude(shader->getShaderSource()));
             shader->setName(name);
             return shader;
         }
@@ -28,7 +55,7 @@ osg::ref_ptr<osg::Shader> loadShader(osg::Shader::Type type, const std::string& 
     {
         if (name == s->name)
         {
-            osg::ref_ptr<osg::Shader> shader = new osg::Shader(type, s->source);
+            osg::ref_ptr<osg::Shader> shader = new osg::Shader(type, withPrelude(s->source));
             shader->setName(name);
             return shader;
         }

@@ -12,7 +12,6 @@
 #ifndef OSS_MAX_SHADOW_LIGHTS
 #define OSS_MAX_SHADOW_LIGHTS 1
 #endif
-#define OSS_MAX_SCENE_LIGHTS 8
 
 uniform int oss_numLights;
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];

@@ -24,7 +24,6 @@
 #ifndef OSS_SKIPPED_SLOTS
 #define OSS_SKIPPED_SLOTS 0
 #endif
-#define OSS_MAX_SCENE_LIGHTS 8
 
 in vec4 oss_eyePosition;
 in vec4 oss_texCoord0;

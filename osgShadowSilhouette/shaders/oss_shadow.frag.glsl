@@ -22,7 +22,6 @@
 #ifndef OSS_SKIPPED_SLOTS
 #define OSS_SKIPPED_SLOTS 0 // bit s: a cube face left out, term 1 (oss_receiver.frag.glsl)
 #endif
-#define OSS_MAX_SCENE_LIGHTS 8
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers

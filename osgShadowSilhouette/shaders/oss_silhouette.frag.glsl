@@ -203,7 +203,7 @@ float oss_silhouettePixelOverlay(sampler2D depthMap, mat4 eyeToShadow, vec4 eyeP
 
 #if defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP)
 uniform int oss_maskLight;
-uniform int oss_lightIndex[8];
+uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 uniform sampler2D oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
 uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps
@@ -212,7 +212,7 @@ int oss_shadowSlotOf(int light);
 // The debug overlay (rgb, opacity) of the light oss_maskLight (see the DebugView values).
 vec4 oss_silhouetteDebug(vec4 eyePosition)
 {
-    int slot = oss_shadowSlotOf(oss_lightIndex[clamp(oss_maskLight, 0, 7)]);
+    int slot = oss_shadowSlotOf(oss_lightIndex[clamp(oss_maskLight, 0, OSS_MAX_SCENE_LIGHTS - 1)]);
     for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
     {
         if (s != slot)

@@ -50,7 +50,7 @@ vec4 oss_classColor(bool silhouette, bool lit);
 
 #ifdef OSS_DEBUG_MASK
 uniform int oss_numLights;
-uniform int oss_lightIndex[8];
+uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform int oss_maskLight;
 int oss_shadowSlotOf(int light);
 
@@ -58,7 +58,7 @@ int oss_shadowSlotOf(int light);
 // nothing to shadow: it has no light pass) and faces the surface, else 0.
 float oss_unshadowedMask(vec3 p)
 {
-    int n = oss_lightIndex[clamp(oss_maskLight, 0, 7)];
+    int n = oss_lightIndex[clamp(oss_maskLight, 0, OSS_MAX_SCENE_LIGHTS - 1)];
     bool facing = oss_facesLight(n, p);
     return oss_maskLight < oss_numLights && oss_shadowSlotOf(n) < 0 && facing ? 1.0 : 0.0;
 }
