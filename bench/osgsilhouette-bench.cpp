@@ -81,8 +81,7 @@ std::vector<std::string> availableTechniques()
 {
     std::vector<std::string> out;
     for (int m = SilhouetteShadowTechnique::SHADOW_MAP; m <= SilhouetteShadowTechnique::SHADOW_VOLUME; ++m)
-        if (SilhouetteShadowTechnique::isModeAvailable(SilhouetteShadowTechnique::Mode(m)))
-            out.push_back(SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m)));
+        out.push_back(SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m)));
     for (const std::string& p : osshar::peerModes()) out.push_back(p);
     return out;
 }
@@ -173,7 +172,6 @@ bool runnable(const std::string& technique, std::string& why)
     }
     SilhouetteShadowTechnique::Mode m;
     if (!SilhouetteShadowTechnique::modeFromName(technique, m)) return why = "unknown technique", false;
-    if (!SilhouetteShadowTechnique::isModeAvailable(m)) return why = "not available in this build", false;
     return true;
 }
 

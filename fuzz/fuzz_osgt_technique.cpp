@@ -41,8 +41,8 @@ void check(const osg::Node* node)
     if (!std::isfinite(t->getPolygonOffsetFactor()) || !std::isfinite(t->getPolygonOffsetUnits())) std::abort();
     if (!std::isfinite(t->getShadowRayOffset()) || t->getShadowRayOffset() < 0.0f) std::abort();
     if (t->getMaxShadowLights() < 1 || t->getMaxShadowLights() > 8) std::abort();
-    if (!osgShadowSilhouette::SilhouetteShadowTechnique::isModeAvailable(t->getMode()) &&
-        t->getEffectiveMode() != osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_MAP)
+    if (t->getMode() < osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_MAP ||
+        t->getMode() > osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_VOLUME)
         std::abort();
 }
 

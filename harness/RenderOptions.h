@@ -48,7 +48,7 @@ struct RenderOptions
     bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
     bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
     bool perPixelLighting = true;     ///< --per-pixel-lighting on|off (the property PerPixelLighting)
-    bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::setEmptyFaceSkipping())
+    bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::Tuning)
     std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
     std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off
     float shadowRayOffset = -1.0f;     ///< --shadow-ray-offset F (negative: the technique's default)

@@ -269,6 +269,11 @@ void GpuCounter::releaseGLObjects(osg::State* state) const
         _contexts.clear();
 }
 
+void GpuCounter::resizeGLObjectBuffers(unsigned int)
+{
+    // Per-context state lives in a map, which holds any context ID.
+}
+
 // ---------------------------------------------------------------------------------------
 // BlockerQueries
 
@@ -398,7 +403,13 @@ void BlockerQueries::releaseGLObjects(osg::State* state) const
         _contexts.erase(state->getContextID());
     else
         _contexts.clear();
-    for (const auto& box : _boxes) box->releaseGLObjects(state);
+    _geode->releaseGLObjects(state); // the boxes and their state
+}
+
+void BlockerQueries::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    _geode->resizeGLObjectBuffers(maxSize); // the query state itself lives in a map
 }
 
 // ---------------------------------------------------------------------------------------
@@ -540,6 +551,11 @@ void DrawnSamples::releaseGLObjects(osg::State* state) const
         _contexts.erase(state->getContextID());
     else
         _contexts.clear();
+}
+
+void DrawnSamples::resizeGLObjectBuffers(unsigned int)
+{
+    // Per-context state lives in a map, which holds any context ID.
 }
 
 } // namespace osgShadowSilhouette

@@ -122,6 +122,20 @@ ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask
 
 ShadowVolumeGroup::~ShadowVolumeGroup() = default;
 
+void ShadowVolumeGroup::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    _root->resizeGLObjectBuffers(maxSize); // every entry's transform, volumes and state
+    for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+        if (ss) ss->resizeGLObjectBuffers(maxSize);
+}
+
+void ShadowVolumeGroup::releaseGLObjects(osg::State* state) const
+{
+    _root->releaseGLObjects(state);
+    for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+        if (ss) ss->releaseGLObjects(state);
+}
+
 osg::ref_ptr<osg::StateSet> ShadowVolumeGroup::stencilState(bool zfail, unsigned int ref, unsigned int mask,
                                                             unsigned int write) const
 {
@@ -448,6 +462,40 @@ StencilShadowPasses::StencilShadowPasses(osg::Program* lighting, osg::Program* v
 }
 
 StencilShadowPasses::~StencilShadowPasses() = default;
+
+template<class Apply>
+void StencilShadowPasses::forEachHolder(const Apply& apply) const
+{
+    apply(_lighting.get());
+    apply(_volume.get());
+    apply(_base.get());
+    apply(_outer.get());
+    for (const Slot& s : _slots)
+    {
+        apply(s.volumes.get());
+        apply(s.clear.get());
+        apply(s.maskCounter.get());
+        apply(s.volumeCounter.get());
+        for (osg::Node* node : {s.maskBegin.get(), s.maskEnd.get(), s.volumeBegin.get(), s.volumeEnd.get()}) apply(node);
+        for (osg::StateSet* ss : {s.clearState.get(), s.maskState.get(), s.volumeState.get(), s.litState.get(),
+                                  s.litShadowMapState.get()})
+            apply(ss);
+    }
+}
+
+void StencilShadowPasses::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    forEachHolder([maxSize](auto* holder) {
+        if (holder) holder->resizeGLObjectBuffers(maxSize);
+    });
+}
+
+void StencilShadowPasses::releaseGLObjects(osg::State* state) const
+{
+    forEachHolder([state](auto* holder) {
+        if (holder) holder->releaseGLObjects(state);
+    });
+}
 
 void StencilShadowPasses::build(Slot& s) const
 {

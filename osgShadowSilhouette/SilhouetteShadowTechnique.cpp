@@ -2,7 +2,9 @@
 #include <osgShadowSilhouette/PropertyRanges>
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include "EyePass.h"
 #include "RenderLeaves.h"
+#include "SceneVisitors.h"
 #include "ShaderSource.h"
 
 #include <osg/ColorMask>
@@ -33,6 +35,12 @@ namespace osgShadowSilhouette {
 
 namespace {
 
+using detail::boundsOf;
+using detail::CasterSignatureVisitor;
+using detail::prunePrepass;
+using detail::TagBaseTextureVisitor;
+using detail::TraverseShadowedSceneCallback;
+
 constexpr unsigned int MAX_MAP_SIZE = 16384;
 
 /** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
@@ -42,12 +50,6 @@ constexpr unsigned int MAX_MAP_SIZE = 16384;
  *  BaseTextureUnit. The maps' textures give up OVERRIDE where the ShadowSettings'
  *  UseOverrideForShadowMapTexture is false (mapBinding()). */
 constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
-
-std::atomic<bool>& emptyFaceSkipping()
-{
-    static std::atomic<bool> skip{true};
-    return skip;
-}
 
 /** Whether @p value is one property @p name takes (PropertyRanges); a warning naming the
  *  property, the value, its range and the value kept otherwise. */
@@ -67,8 +69,7 @@ bool acceptValue(const char* name, T value, T kept)
 
 enum WarningKey
 {
-    WARN_MODE_UNAVAILABLE = 1,
-    WARN_OVER_BUDGET,
+    WARN_OVER_BUDGET = 1,
     WARN_NO_LIGHT,
     WARN_MAP_SIZE,
     WARN_NO_STENCIL,
@@ -80,249 +81,6 @@ enum WarningKey
     WARN_CONTEXT_MAP_SIZE,
     WARN_LIGHT_NUM,
     WARN_DEBUG_LIGHT,
-};
-
-/** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
-void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables)
-{
-    detail::eraseLeaves(bin, [&](const osgUtil::RenderLeaf& leaf) {
-        return std::find(drawables.begin(), drawables.end(), leaf.getDrawable()) != drawables.end();
-    });
-}
-
-/** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
-bool mirrors(const osgUtil::RenderLeaf& leaf)
-{
-    if (!leaf._modelview) return false;
-    const osg::Matrix& m = *leaf._modelview;
-    const double det = m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
-                       m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
-                       m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
-    return det < 0.0;
-}
-
-/** Moves the leaves of @p drawables under their state graph's child of @p ss (added to @p bin
- *  where new this frame): draws of those drawables that also apply @p ss. Mirrored draws stay
- *  (the triangle lists: a mirror turns a closed caster's counter-clockwise half into the
- *  half facing away from the light, which misses the rays leaving it from inside). */
-void moveLeaves(osgUtil::RenderBin& bin, const std::unordered_set<const osg::Drawable*>& drawables, osg::StateSet* ss)
-{
-    const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
-    for (osgUtil::StateGraph* graph : graphs)
-    {
-        if (graph->getStateSet() == ss) continue;
-        auto& leaves = graph->_leaves;
-        const auto moved = std::stable_partition(leaves.begin(), leaves.end(), [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) {
-            return drawables.count(leaf->getDrawable()) == 0 || mirrors(*leaf);
-        });
-        if (moved == leaves.end()) continue;
-        osgUtil::StateGraph* child = graph->find_or_insert(ss);
-        if (child->_leaves.empty()) bin.addStateGraph(child); // state graphs outlive frames, their leaves do not
-        for (auto it = moved; it != leaves.end(); ++it) child->addLeaf(it->get());
-        leaves.erase(moved, leaves.end());
-    }
-    for (auto& nested : bin.getRenderBinList()) moveLeaves(*nested.second, drawables, ss);
-}
-
-/** Turns the leaves of billboard drawables in a light pass's @p bin (whose camera has the
- *  view matrix @p lightView) as the eye's view turned them: OSG's cull turns them toward the
- *  light camera. An instance is told by where its origin stands (the billboard's position
- *  of the drawable); each leaf takes the nearest of the view's instances. */
-void turnBillboardLeaves(osgUtil::RenderBin& bin, const BillboardMatrices& billboards, const osg::Matrixd& lightView)
-{
-    const osg::Matrixd lightToWorld = osg::Matrixd::inverse(lightView);
-    detail::forEachLeaf(bin, [&](osgUtil::RenderLeaf& leaf) {
-        const auto found = billboards.find(leaf.getDrawable());
-        if (found == billboards.end() || found->second.empty() || !leaf._modelview) return;
-        const osg::Vec3d origin = leaf._modelview->getTrans() * lightToWorld;
-        const osg::Matrixd* nearest = nullptr;
-        double best = 0.0;
-        for (const osg::Matrixd& world : found->second)
-        {
-            const double d = (world.getTrans() - origin).length2();
-            if (!nearest || d < best) nearest = &world, best = d;
-        }
-        leaf._modelview = new osg::RefMatrix(*nearest * lightView);
-    });
-}
-
-/** The cull callback of a light-space camera (depth pass, triangle lists): culls the
- *  shadowed scene's casters into the camera's own render stage, leaving out the geometry
- *  with non-finite vertices, then the camera's own children. With setCasters(false) only
- *  the camera's own children (a depth map kept from an earlier frame is tested, not redrawn). */
-class TraverseShadowedSceneCallback : public osg::NodeCallback
-{
-public:
-    explicit TraverseShadowedSceneCallback(osgShadow::ShadowedScene* scene) : _scene(scene) {}
-    void setCasters(bool flag) { _casters = flag; }
-    void setExcluded(const std::vector<const osg::Drawable*>& drawables) { _excluded = drawables; }
-    /** The draws of @p drawables also apply @p ss (the triangle lists' closed casters). */
-    void setMarked(std::unordered_set<const osg::Drawable*> drawables, osg::StateSet* ss)
-    {
-        _marked = std::move(drawables);
-        _markedStateSet = ss;
-    }
-    /** The draws are those @p listed gives (the triangle lists: triangles only). */
-    void setListed(ListedDrawables* listed) { _listed = listed; }
-    /** The billboard drawables are drawn as the view turned them (FrameContext::billboards). */
-    void setBillboards(std::shared_ptr<const BillboardMatrices> billboards) { _billboards = std::move(billboards); }
-    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
-    {
-        if (_scene && _casters)
-        {
-            _scene->osg::Group::traverse(*nv);
-            osgUtil::CullVisitor* cv = nv->asCullVisitor();
-            if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
-            if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
-                moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
-            if (cv && _billboards && !_billboards->empty() && cv->getCurrentRenderBin() && cv->getCurrentCamera())
-                turnBillboardLeaves(*cv->getCurrentRenderBin(), *_billboards, cv->getCurrentCamera()->getViewMatrix());
-            if (cv && _listed && cv->getCurrentRenderBin()) _listed->apply(*cv->getCurrentRenderBin());
-        }
-        traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
-    }
-
-private:
-    osgShadow::ShadowedScene* _scene;
-    bool _casters = true;
-    std::vector<const osg::Drawable*> _excluded;
-    std::unordered_set<const osg::Drawable*> _marked;
-    osg::ref_ptr<osg::StateSet> _markedStateSet;
-    osg::ref_ptr<ListedDrawables> _listed;
-    std::shared_ptr<const BillboardMatrices> _billboards;
-};
-
-/** World bounds of the drawables under the traversal mask, leaving out (and listing) the
- *  geometry with NaN or infinite vertices, which neither casts nor bounds anything. LOD
- *  children and billboard drawables are those @p view draws, turned as it turns them
- *  (each instance's matrix recorded in `billboards`). */
-class FiniteBoundsVisitor : public osg::ComputeBoundsVisitor
-{
-public:
-    FiniteBoundsVisitor(MeshCache& cache, const ViewPoint& view) : _cache(cache), _view(view) {}
-    std::vector<const osg::Drawable*> nonFinite;
-    BillboardMatrices billboards;
-
-    void apply(osg::LOD& lod) override
-    {
-        if (!_view.valid) return traverse(lod);
-        const osg::Matrixd world = current();
-        for (unsigned int i = 0; i < lod.getNumChildren(); ++i)
-            if (_view.isActive(lod, i, world)) lod.getChild(i)->accept(*this);
-    }
-    void apply(osg::Billboard& billboard) override
-    {
-        const osg::Matrixd world = current();
-        for (unsigned int i = 0; i < billboard.getNumDrawables(); ++i)
-        {
-            osg::Drawable* drawable = billboard.getDrawable(i);
-            if (!drawable || !validNodeMask(*drawable)) continue;
-            osg::Matrix turned = _view.billboardMatrix(billboard, i, world);
-            billboards[drawable].push_back(turned);
-            pushMatrix(turned);
-            apply(*drawable);
-            popMatrix();
-        }
-    }
-
-    void apply(osg::Drawable& drawable) override
-    {
-        const osg::Geometry* geometry = drawable.asGeometry();
-        if (geometry && !_cache.hasFiniteVertices(*geometry))
-            nonFinite.push_back(&drawable);
-        else
-            osg::ComputeBoundsVisitor::apply(drawable);
-    }
-
-private:
-    osg::Matrixd current() const { return _matrixStack.empty() ? osg::Matrixd() : osg::Matrixd(_matrixStack.back()); }
-
-    MeshCache& _cache;
-    ViewPoint _view;
-};
-
-/** World bounds of the casters and a hash of what a depth pass draws of them: each
- *  drawable, its world matrix and the versions of its vertex array and primitive sets. */
-class CasterSignatureVisitor : public FiniteBoundsVisitor
-{
-public:
-    CasterSignatureVisitor(MeshCache& cache, const ViewPoint& view) : FiniteBoundsVisitor(cache, view), _meshCache(cache) {}
-    std::size_t signature = 0;
-    std::vector<CasterPart> parts; ///< each finite drawable: world box, and its plane when flat
-
-    void apply(osg::Drawable& drawable) override
-    {
-        FiniteBoundsVisitor::apply(drawable);
-        addPart(drawable);
-        mix(std::hash<const void*>()(&drawable));
-        if (!_matrixStack.empty())
-            for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
-        const osg::Geometry* geometry = drawable.asGeometry();
-        if (!geometry) return;
-        if (const osg::Array* vertices = geometry->getVertexArray())
-        {
-            mix(std::hash<const void*>()(vertices));
-            mix(vertices->getModifiedCount());
-        }
-        for (const auto& primitives : geometry->getPrimitiveSetList())
-        {
-            mix(std::hash<const void*>()(primitives.get()));
-            mix(primitives->getModifiedCount());
-        }
-    }
-
-    void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
-
-private:
-    void addPart(const osg::Drawable& drawable)
-    {
-        const osg::Geometry* geometry = drawable.asGeometry();
-        if (geometry && !_meshCache.hasFiniteVertices(*geometry)) return; // left out, as from the bounds
-        const osg::BoundingBox& local = drawable.getBoundingBox();
-        if (!local.valid()) return;
-        const osg::Matrixd world = _matrixStack.empty() ? osg::Matrixd() : _matrixStack.back();
-        CasterPart part;
-        for (unsigned int i = 0; i < 8; ++i) part.box.expandBy(osg::Vec3d(local.corner(i)) * world);
-        std::array<osg::Vec3d, 3> spanning;
-        if (geometry && _meshCache.getPlane(*geometry, spanning))
-        {
-            for (osg::Vec3d& p : spanning) p = p * world;
-            osg::Vec3d normal = (spanning[1] - spanning[0]) ^ (spanning[2] - spanning[0]);
-            if (normal.normalize() > 0.0 && std::isfinite(normal.x()) && std::isfinite(normal.y()) &&
-                std::isfinite(normal.z()))
-            {
-                part.flat = true;
-                part.planePoint = spanning[0];
-                part.planeNormal = normal;
-            }
-        }
-        parts.push_back(part);
-    }
-
-    MeshCache& _meshCache;
-};
-
-/** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
- *  receiver shading samples it. */
-class TagBaseTextureVisitor : public osg::NodeVisitor
-{
-public:
-    TagBaseTextureVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::Node& node) override
-    {
-        tag(node.getStateSet());
-        traverse(node);
-    }
-    void apply(osg::Drawable& drawable) override { tag(drawable.getStateSet()); }
-
-private:
-    static void tag(osg::StateSet* ss)
-    {
-        if (!ss) return;
-        const osg::StateAttribute* tex = ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE);
-        if (tex && (ss->getTextureMode(0, GL_TEXTURE_2D) & osg::StateAttribute::ON))
-            ss->setDefine(shader::DEFINE_BASE_TEXTURE);
-    }
 };
 
 osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
@@ -356,14 +114,6 @@ osg::ref_ptr<osg::Texture2D> createLitTexture()
     return t;
 }
 
-osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask, MeshCache& cache, const ViewPoint& view)
-{
-    FiniteBoundsVisitor cbv(cache, view);
-    cbv.setTraversalMask(mask);
-    for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(cbv);
-    const osg::BoundingBox& b = cbv.getBoundingBox();
-    return b.valid() ? osg::BoundingBoxd(b._min, b._max) : osg::BoundingBoxd();
-}
 
 } // namespace
 
@@ -392,7 +142,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _hybridMethod(copy._hybridMethod),
       _hybridEdgeMask(copy._hybridEdgeMask),
       _depthPrepass(copy._depthPrepass),
-      _shadowRayOffset(copy._shadowRayOffset)
+      _shadowRayOffset(copy._shadowRayOffset),
+      _tuning(copy._tuning)
 {
 }
 
@@ -400,11 +151,6 @@ SilhouetteShadowTechnique::~SilhouetteShadowTechnique() = default;
 
 // ---------------------------------------------------------------------------------------
 // Properties
-
-bool SilhouetteShadowTechnique::isModeAvailable(Mode mode)
-{
-    return mode == SHADOW_MAP || mode == SILHOUETTE_MAP || mode == SHADOW_VOLUME || mode == HYBRID;
-}
 
 const char* SilhouetteShadowTechnique::modeName(Mode mode)
 {
@@ -445,11 +191,13 @@ void SilhouetteShadowTechnique::setMode(Mode mode)
         mode = SHADOW_MAP;
     }
     _mode = mode;
+    _renderedMode = -1;
 }
 
 SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::getEffectiveMode() const
 {
-    return isModeAvailable(_mode) ? _mode : SHADOW_MAP;
+    const int rendered = _renderedMode.load();
+    return rendered < 0 ? _mode : Mode(rendered);
 }
 
 void SilhouetteShadowTechnique::setShadowMapSize(unsigned int size)
@@ -556,16 +304,6 @@ bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, 
     // hidden fragments, whose cost grows with the slots each fragment evaluates.
     return mode == HYBRID && _useDefaultShading &&
            double(triangles) * PREPASS_PIXELS_PER_TRIANGLE <= double(slots) * viewportPixels;
-}
-
-void SilhouetteShadowTechnique::setEmptyFaceSkipping(bool skip)
-{
-    emptyFaceSkipping() = skip;
-}
-
-bool SilhouetteShadowTechnique::getEmptyFaceSkipping()
-{
-    return emptyFaceSkipping();
 }
 
 SilhouetteShadowTechnique::Statistics SilhouetteShadowTechnique::getStatistics() const
@@ -734,61 +472,84 @@ void SilhouetteShadowTechnique::cleanSceneGraph()
     _viewDataMap.clear();
 }
 
-void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
+/** What releaseGLObjects() and resizeGLObjectBuffers() do to each holder of GL objects that
+ *  applyToGLObjects() visits: both walk the same list, so neither can miss a holder. */
+struct SilhouetteShadowTechnique::GLObjectsOp
+{
+    bool release = true;
+    osg::State* state = nullptr; ///< release: the context's state, or every context (nullptr)
+    unsigned int maxSize = 0;    ///< resize: the number of contexts
+
+    template<class Holder>
+    void operator()(Holder* holder) const
+    {
+        if (!holder) return;
+        if (release)
+            holder->releaseGLObjects(state);
+        else
+            holder->resizeGLObjectBuffers(maxSize);
+    }
+};
+
+void SilhouetteShadowTechnique::applyToGLObjects(const GLObjectsOp& op) const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
     ++_glGeneration; // the maps are rendered again before they are read
-    if (_receiverProgram) _receiverProgram->resizeGLObjectBuffers(maxSize);
-    if (_depthPassStateSet) _depthPassStateSet->resizeGLObjectBuffers(maxSize);
-    if (_prepassProgram) _prepassProgram->resizeGLObjectBuffers(maxSize);
-    if (_litDummyTexture) _litDummyTexture->resizeGLObjectBuffers(maxSize);
-    if (_silhouetteMapStateSet) _silhouetteMapStateSet->resizeGLObjectBuffers(maxSize);
-    if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->resizeGLObjectBuffers(maxSize);
-    if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->resizeGLObjectBuffers(maxSize);
-    if (_litRawDepthTexture) _litRawDepthTexture->resizeGLObjectBuffers(maxSize);
-    _listedDrawables->resizeGLObjectBuffers(maxSize);
-    for (auto& entry : _viewDataMap)
+    op(_receiverProgram.get());
+    op(_depthPassStateSet.get());
+    op(_prepassProgram.get());
+    op(_litDummyTexture.get());
+    op(_silhouetteMapStateSet.get());
+    op(_defaultSilhouetteTexture.get());
+    op(_defaultNeighbourhoodTexture.get());
+    op(_litRawDepthTexture.get());
+    op(_listStateSet.get());
+    op(_listFrontOnlyStateSet.get());
+    op(_listedDrawables.get());
+    op(_stencilProgram.get());
+    op(_volumeProgram.get());
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> shaders(_shadowShadersMutex);
+        op(_shadowFragmentShader.get());
+        op(_silhouetteFragmentShader.get());
+        op(_listTermFragmentShader.get());
+        op(_programLinkCheck.get());
+    }
+    for (const auto& entry : _viewDataMap)
     {
         ViewData& vd = *entry.second;
-        vd.receiverStateSet->resizeGLObjectBuffers(maxSize);
+        op(vd.receiverStateSet.get());
+        op(vd.receiverPassStateSet.get());
+        op(vd.prepassStateSet.get());
+        op(vd.stencil.get());
+        op(vd.exactCounter.get());
+        op(vd.exactBegin.get());
+        op(vd.exactEnd.get());
         for (LightPass& pass : vd.passes)
         {
-            if (pass.depthCamera) pass.depthCamera->resizeGLObjectBuffers(maxSize);
-            if (pass.depthTexture) pass.depthTexture->resizeGLObjectBuffers(maxSize);
-            if (pass.silhouettePass) pass.silhouettePass->resizeGLObjectBuffers(maxSize);
-            if (pass.listPass) pass.listPass->resizeGLObjectBuffers(maxSize);
+            op(pass.depthCamera.get());
+            op(pass.depthTexture.get());
+            op(pass.silhouettePass.get());
+            op(pass.blockers.get());
+            op(pass.listPass.get());
+            op(pass.samples.get());
         }
     }
 }
 
+void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    GLObjectsOp op;
+    op.release = false;
+    op.maxSize = maxSize;
+    applyToGLObjects(op);
+}
+
 void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
 {
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
-    ++_glGeneration; // the maps are rendered again before they are read
-    if (_receiverProgram) _receiverProgram->releaseGLObjects(state);
-    if (_depthPassStateSet) _depthPassStateSet->releaseGLObjects(state);
-    if (_prepassProgram) _prepassProgram->releaseGLObjects(state);
-    if (_litDummyTexture) _litDummyTexture->releaseGLObjects(state);
-    if (_silhouetteMapStateSet) _silhouetteMapStateSet->releaseGLObjects(state);
-    if (_defaultSilhouetteTexture) _defaultSilhouetteTexture->releaseGLObjects(state);
-    if (_defaultNeighbourhoodTexture) _defaultNeighbourhoodTexture->releaseGLObjects(state);
-    if (_litRawDepthTexture) _litRawDepthTexture->releaseGLObjects(state);
-    _listedDrawables->releaseGLObjects(state);
-    for (const auto& entry : _viewDataMap)
-    {
-        const ViewData& vd = *entry.second;
-        vd.receiverStateSet->releaseGLObjects(state);
-        vd.exactCounter->releaseGLObjects(state);
-        for (const LightPass& pass : vd.passes)
-        {
-            if (pass.samples) pass.samples->releaseGLObjects(state);
-            if (pass.depthCamera) pass.depthCamera->releaseGLObjects(state);
-            if (pass.depthTexture) pass.depthTexture->releaseGLObjects(state);
-            if (pass.silhouettePass) pass.silhouettePass->releaseGLObjects(state);
-            if (pass.blockers) pass.blockers->releaseGLObjects(state);
-            if (pass.listPass) pass.listPass->releaseGLObjects(state);
-        }
-    }
+    GLObjectsOp op;
+    op.state = state;
+    applyToGLObjects(op);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -808,11 +569,12 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     osg::StateSet* ss = new osg::StateSet;
     vd->receiverStateSet = ss;
     vd->receiverPassStateSet = new osg::StateSet;
+    vd->receiverPassStateSet->setDataVariance(osg::Object::DYNAMIC); // the stencil modes' program, the prepass's depth
     vd->prepassStateSet = createPrepassStateSet();
     if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
     const unsigned int slots = slotCapacity();
     ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
-    ss->setDefine(shader::DEFINE_MAX_SHADOW_SLOTS, std::to_string(slots));
+    ss->setDataVariance(osg::Object::DYNAMIC); // its defines, bindings and uniforms change per frame
 
     vd->numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
     vd->lightIndex = new osg::Uniform(osg::Uniform::INT, shader::LIGHT_INDEX, shader::MAX_SCENE_LIGHTS);
@@ -842,7 +604,6 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     }
     // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
     // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
-    ss->setDefine(shader::DEFINE_MAX_LIST_SLOTS, "1");
     vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
     vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
     for (unsigned int slot = 0; slot < slots; ++slot)
@@ -909,14 +670,15 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         _shadowedScene->osg::Group::traverse(cv); // init() has not run yet (it runs in update)
         return;
     }
-    if (!isModeAvailable(_mode))
-        warnOnce(WARN_MODE_UNAVAILABLE, std::string("Mode ") + modeName(_mode) +
-                                            " is not available in this version; rendering SHADOW_MAP");
-
     clampMapSizeToContext(cv);
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
+    // The eye pass's configuration, filled in as the frame is planned and applied at the end.
+    detail::EyePassPlan eye;
+    eye.mode = frame.mode;
+    eye.debugView = _debugView;
+    eye.perPixelLighting = _perPixelLighting;
     // The receivers are culled first: a LightSource among them is known only afterwards. Their
     // pass state set gets the stencil modes' lighting program once the method is known.
     cullReceivers(cv, vd, vd.receiverPassStateSet.get());
@@ -937,6 +699,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
     stats.effectiveMode = frame.mode;
+    _renderedMode = int(frame.mode);
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
     else prepareFrame(cv, frame);
     warnAboutMissingLights(lights);
@@ -972,44 +735,28 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         frame.triangleLists = false;
     }
     // One storage block (or image) per slot in use: the eye pass declares no more than it reads.
-    if (frame.triangleLists)
-        vd.receiverStateSet->setDefine(shader::DEFINE_MAX_LIST_SLOTS, std::to_string(std::max(1u, nextFreeSlot)));
+    eye.triangleLists = frame.triangleLists;
+    eye.listSlots = std::max(1u, nextFreeSlot);
     std::size_t listTexels = 0;
     for (unsigned int slot = 0; slot < nextFreeSlot && slot < vd.passes.size(); ++slot)
         if (vd.passes[slot].listPass) listTexels = std::max(listTexels, vd.passes[slot].listPass->getBufferSize() / 16);
-    stats.listImages = frame.triangleLists && cv.getState() &&
+    stats.listImages = frame.triangleLists && _tuning.listImageReads && cv.getState() &&
                        TriangleListPass::imageReadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot), listTexels);
-    if (stats.listImages)
-        vd.receiverStateSet->setDefine(shader::DEFINE_LIST_IMAGES);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_LIST_IMAGES);
-    stats.listBlockHeads = stats.listImages &&
+    eye.listImages = stats.listImages;
+    stats.listBlockHeads = stats.listImages && _tuning.listBlockHeads &&
                            TriangleListPass::blockHeadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot));
-    if (stats.listBlockHeads)
-        vd.receiverStateSet->setDefine(shader::DEFINE_LIST_BLOCK_HEADS);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_LIST_BLOCK_HEADS);
+    eye.listBlockHeads = stats.listBlockHeads;
     stats.triangleLists = frame.triangleLists;
     const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
-    if (frame.triangleLists)
-        vd.receiverStateSet->setDefine(shader::DEFINE_TRIANGLE_LISTS);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_TRIANGLE_LISTS);
     // Statistics of HYBRID's lists: the fragments resolved exactly, counted in the eye pass.
     const bool countExact = frame.triangleLists && _stats.valid();
+    eye.countExact = countExact;
     if (countExact)
     {
-        vd.receiverStateSet->setDefine(shader::DEFINE_COUNT_EXACT);
         vd.exactBegin->accept(cv);
         vd.exactEnd->accept(cv);
         stats.silhouettePixels = vd.exactCounter->getLastValue();
     }
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_COUNT_EXACT);
-    if (frame.mode == HYBRID)
-        vd.receiverStateSet->setDefine(shader::DEFINE_BIAS_BAND);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_BIAS_BAND);
     if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
     if (stencilMode)
         vd.receiverPassStateSet->setAttributeAndModes(_stencilProgram.get(),
@@ -1029,7 +776,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     const bool silhouette = frame.mode == SILHOUETTE_MAP;
     const bool paired = pairedSlots(frame.mode);
     const unsigned int capacity = slotCapacity(paired);
-    vd.receiverStateSet->setDefine(shader::DEFINE_MAX_SHADOW_SLOTS, std::to_string(capacity));
+    eye.slotCapacity = capacity;
     // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
     std::vector<osg::Texture2D*> silhouetteMaps(
         capacity, silhouette ? _defaultNeighbourhoodTexture.get() : _defaultSilhouetteTexture.get());
@@ -1048,10 +795,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     // SHADOW_MAP their units hold the depth maps bound above.
     const bool edgeMasks = frame.mode == HYBRID && _hybridEdgeMask;
     if (paired) bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
-    if (edgeMasks)
-        vd.receiverStateSet->setDefine(shader::DEFINE_HYBRID_EDGES);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_HYBRID_EDGES);
+    eye.edgeMasks = edgeMasks;
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (slots[i] < 0) continue;
@@ -1063,7 +807,8 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 
     if (stencilMode)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
-    updateViewUniforms(cv, vd, lights, slots);
+    updateViewUniforms(cv, vd, lights, slots, eye);
+    detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(eye));
     cullProgramLinkCheck(cv);
     if (const osg::Viewport* viewport = cv.getViewport())
         stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
@@ -1243,7 +988,7 @@ void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd,
     // nothing: the eye pass leaves it out. The counts come back a frame or two late; until
     // then, and in every frame that rebuilds, the face is evaluated.
     const bool receiverProgram = frame.mode == SHADOW_MAP || frame.mode == SILHOUETTE_MAP || frame.triangleLists;
-    vd.slotSkipped[slot] = emptyFaceSkipping() && receiverProgram && frustum.faceCore > 0.0 &&
+    vd.slotSkipped[slot] = _tuning.skipEmptyFaces && receiverProgram && frustum.faceCore > 0.0 &&
                            (frame.triangleLists ? pass.listPass && pass.listPass->listedNothing()
                                                 : pass.samples->drewNothing());
     if (vd.slotSkipped[slot]) ++stats.slotsSkipped;
@@ -1356,7 +1101,7 @@ void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, V
     {
         pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
                                              "osgShadowSilhouette triangle lists " + std::to_string(slot),
-                                             grow ? neededNodes : 0);
+                                             grow ? neededNodes : 0, _tuning.listNodeReservePerTexel);
         auto* scene = new TraverseShadowedSceneCallback(_shadowedScene);
         scene->setListed(_listedDrawables.get());
         pass.listPass->getCamera()->setCullCallback(scene);
@@ -1418,63 +1163,6 @@ void SilhouetteShadowTechnique::cullEdgeMask(osgUtil::CullVisitor& cv, LightPass
     stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
 }
 
-namespace {
-
-/** Whether the state graph `sg` lies under the state set `ss`. */
-bool under(const osgUtil::StateGraph* sg, const osg::StateSet* ss)
-{
-    for (; sg; sg = sg->_parent)
-        if (sg->getStateSet() == ss) return true;
-    return false;
-}
-
-/** Whether state set ss sets attribute `type`; above the receivers' state set only an
- *  OVERRIDE one reaches the eye pass (the receivers' program and LEQUAL replace the rest). */
-bool setsAttribute(const osg::StateSet& ss, osg::StateAttribute::Type type, bool aboveReceivers)
-{
-    const osg::StateSet::RefAttributePair* pair = ss.getAttributePair(type);
-    return pair && (!aboveReceivers || (pair->second & osg::StateAttribute::OVERRIDE) != 0);
-}
-
-/** Whether the depth prepass draws the leaves of `sg` as the eye pass does: no state set on
- *  their path (besides the prepass's and the receivers' own) sets a program (a vertex stage
- *  of its own may place them elsewhere), an osg::Depth (the eye pass keeps that test, not
- *  LEQUAL), blending, or a render bin after the opaque one or depth sorted (transparent:
- *  their depth must not hide what shows through them). */
-bool prepassDraws(const osgUtil::StateGraph* sg, const osg::StateSet* prepass, const osg::StateSet* receivers)
-{
-    bool above = false;
-    for (; sg; sg = sg->_parent)
-    {
-        const osg::StateSet* ss = sg->getStateSet();
-        if (ss == receivers) above = true;
-        if (!ss || ss == prepass || ss == receivers) continue;
-        if (setsAttribute(*ss, osg::StateAttribute::PROGRAM, above) || setsAttribute(*ss, osg::StateAttribute::DEPTH, above))
-            return false;
-        if ((ss->getMode(GL_BLEND) & osg::StateAttribute::ON) != 0) return false;
-        if (ss->getRenderingHint() == osg::StateSet::TRANSPARENT_BIN) return false;
-        if (ss->useRenderBinDetails() && (ss->getBinNumber() > 0 || ss->getBinName() == "DepthSortedBin")) return false;
-    }
-    return true;
-}
-
-/** Removes from `bin` and the bins under it the prepass's state graphs (those under
- *  `prepass`) that prepassDraws() rejects, and any that a protected render bin kept out of
- *  the prepass's bin. */
-void prunePrepass(osgUtil::RenderBin& bin, const osg::StateSet* prepass, const osg::StateSet* receivers, bool prepassBin)
-{
-    osgUtil::RenderBin::StateGraphList& graphs = bin.getStateGraphList();
-    graphs.erase(std::remove_if(graphs.begin(), graphs.end(),
-                                [&](osgUtil::StateGraph* sg) {
-                                    return under(sg, prepass) && !(prepassBin && prepassDraws(sg, prepass, receivers));
-                                }),
-                 graphs.end());
-    for (auto& child : bin.getRenderBinList())
-        prunePrepass(*child.second, prepass, receivers,
-                     child.first == SilhouetteShadowTechnique::DEPTH_PREPASS_BIN);
-}
-
-} // namespace
 
 void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd)
 {
@@ -1484,7 +1172,7 @@ void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewD
     cullReceivers(cv, vd, vd.prepassStateSet.get());
     if (osgUtil::RenderBin* bin = cv.getCurrentRenderBin())
         if (osgUtil::RenderStage* stage = bin->getStage())
-            prunePrepass(*stage, vd.prepassStateSet.get(), vd.receiverStateSet.get(), false);
+            prunePrepass(*stage, vd.prepassStateSet.get(), vd.receiverStateSet.get(), false, DEPTH_PREPASS_BIN);
 }
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
@@ -1497,7 +1185,6 @@ void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData
     const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
     const osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
     if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.setComputeNearFarMode(nearFarOverride);
-    updateReceiverDefines(vd);
     cv.pushStateSet(vd.receiverStateSet.get());
     if (pass) cv.pushStateSet(pass);
     _shadowedScene->osg::Group::traverse(cv);
@@ -1510,7 +1197,7 @@ void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData
 
 SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgUtil::CullVisitor& cv) const
 {
-    const Mode mode = getEffectiveMode();
+    const Mode mode = _mode;
     if (mode != SHADOW_VOLUME && mode != HYBRID) return mode;
     const osg::State* state = cv.getState();
     const osg::GraphicsContext* gc = state ? state->getGraphicsContext() : nullptr;
@@ -1558,26 +1245,6 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     stats.volumeFragments = vd.stencil->getVolumeFragments();
     stats.blockersTested = vd.stencil->getBlockersTested();
     stats.blockersSkipped = vd.stencil->getBlockersHidden();
-}
-
-void SilhouetteShadowTechnique::updateReceiverDefines(ViewData& vd) const
-{
-    const bool silhouette = getEffectiveMode() == SILHOUETTE_MAP;
-    const std::pair<const char*, bool> defines[] = {
-        {shader::DEFINE_PER_PIXEL_LIGHTING, _perPixelLighting},
-        {shader::DEFINE_DEBUG_MASK, _debugView == DEBUG_SHADOW_MASK},
-        {shader::DEFINE_DEBUG_CLASSES, _debugView == DEBUG_CLASSES},
-        {shader::DEFINE_SILHOUETTE_MAP, silhouette},
-        {shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, silhouette && _debugView == DEBUG_SILHOUETTE_PIXELS},
-        {shader::DEFINE_DEBUG_SILHOUETTE_MAP, silhouette && _debugView == DEBUG_SILHOUETTE_MAP},
-    };
-    for (const auto& define : defines)
-    {
-        if (define.second)
-            vd.receiverStateSet->setDefine(define.first);
-        else
-            vd.receiverStateSet->removeDefine(define.first);
-    }
 }
 
 void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
@@ -1713,7 +1380,7 @@ void SilhouetteShadowTechnique::cullSilhouettePass(osgUtil::CullVisitor& cv, Lig
 
 void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd,
                                                    const std::vector<FoundLight>& lights,
-                                                   const std::vector<int>& slots)
+                                                   const std::vector<int>& slots, detail::EyePassPlan& eye)
 {
     const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
     const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
@@ -1738,18 +1405,11 @@ void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, Vie
         used = int(s) + 1;
         faces = faces || vd.passes[s].frustum.faceCore > 0.0;
     }
-    vd.receiverStateSet->setDefine(shader::DEFINE_NUM_SHADOW_SLOTS, std::to_string(used));
-    unsigned int skipped = 0;
+    eye.usedSlots = static_cast<unsigned int>(used);
+    eye.skippedSlots = 0;
     for (unsigned int s = 0; s < vd.slotSkipped.size() && s < 32; ++s)
-        if (vd.slotInUse[s] && vd.slotSkipped[s]) skipped |= 1u << s;
-    if (skipped != 0)
-        vd.receiverStateSet->setDefine(shader::DEFINE_SKIPPED_SLOTS, std::to_string(skipped));
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_SKIPPED_SLOTS);
-    if (faces)
-        vd.receiverStateSet->setDefine(shader::DEFINE_CUBE_FACES);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_CUBE_FACES);
+        if (vd.slotInUse[s] && vd.slotSkipped[s]) eye.skippedSlots |= 1u << s;
+    eye.cubeFaces = faces;
     vd.maskLight->set(static_cast<int>(_debugLight));
     // The exact test's ray offset and the lookups' depth bias scale with the shadowed scene's
     // bound, in eye space.

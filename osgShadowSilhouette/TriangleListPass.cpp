@@ -80,24 +80,6 @@ std::vector<ContextLimits>& contextLimits()
     return limits;
 }
 
-std::atomic<bool>& imageReadsAllowed()
-{
-    static std::atomic<bool> allowed{true};
-    return allowed;
-}
-
-std::atomic<unsigned int>& nodeReservePerTexel()
-{
-    static std::atomic<unsigned int> nodes{3};
-    return nodes;
-}
-
-std::atomic<bool>& blockHeadsAllowed()
-{
-    static std::atomic<bool> allowed{true};
-    return allowed;
-}
-
 unsigned int queryLimit(GLenum name)
 {
     GLint value = 0;
@@ -372,7 +354,7 @@ osg::ref_ptr<osg::StateSet> TriangleListPass::createSharedStateSet()
 }
 
 TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, const osg::StateSet& shared,
-                                   const std::string& name, std::size_t nodes)
+                                   const std::string& name, std::size_t nodes, unsigned int reservePerTexel)
     : _grid(grid), _camera(new osg::Camera), _perspective(new osg::Uniform(shader::LIST_PERSPECTIVE, false)),
       _readback(new Readback)
 {
@@ -380,7 +362,7 @@ TriangleListPass::TriangleListPass(unsigned int grid, std::size_t triangles, con
     // texel plus four texels per triangle.
     _triangleCapacity = static_cast<unsigned int>(std::min<std::size_t>(triangles + triangles / 4 + 64, MAX_TRIANGLES));
     _nodeCapacity = static_cast<unsigned int>(std::min<std::size_t>(
-        std::max(nodes, std::size_t(grid) * grid * nodeReservePerTexel() + std::size_t(_triangleCapacity) * 4),
+        std::max(nodes, std::size_t(grid) * grid * reservePerTexel + std::size_t(_triangleCapacity) * 4),
         MAX_NODES));
     _nodeCapacity += _nodeCapacity % 2; // the triangles start on a 16-byte boundary
     _buffer = new ListStorage(sizeof(GLuint) * (trianglesOffset() + 12 * std::size_t(_triangleCapacity)));
@@ -434,35 +416,15 @@ unsigned int TriangleListPass::fragmentStorageBlocks(unsigned int contextID)
 bool TriangleListPass::imageReadsFit(unsigned int contextID, unsigned int slots, std::size_t texels)
 {
     auto& limits = contextLimits();
-    if (!imageReadsAllowed() || contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
+    if (contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
     return slots <= limits[contextID].imageUniforms && texels <= limits[contextID].bufferTexels;
 }
 
 bool TriangleListPass::blockHeadsFit(unsigned int contextID, unsigned int slots)
 {
     auto& limits = contextLimits();
-    if (!blockHeadsAllowed() || contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
+    if (contextID >= limits.size() || limits[contextID].storageBlocks == 0) return false;
     return slots <= limits[contextID].storageBlocks && 2u * slots + 1u <= limits[contextID].outputResources;
-}
-
-void TriangleListPass::setBlockHeadsAllowed(bool allowed)
-{
-    blockHeadsAllowed() = allowed;
-}
-
-bool TriangleListPass::getBlockHeadsAllowed()
-{
-    return blockHeadsAllowed();
-}
-
-void TriangleListPass::setImageReadsAllowed(bool allowed)
-{
-    imageReadsAllowed() = allowed;
-}
-
-bool TriangleListPass::getImageReadsAllowed()
-{
-    return imageReadsAllowed();
 }
 
 bool TriangleListPass::countPending() const
@@ -474,16 +436,6 @@ bool TriangleListPass::listedNothing() const
 {
     const Readback& r = *_readback;
     return r.known && r.counted.load() == r.culled.load() && r.nodes == 0 && r.triangles == 0 && r.reached == 0;
-}
-
-void TriangleListPass::setNodeReservePerTexel(unsigned int nodes)
-{
-    nodeReservePerTexel() = nodes;
-}
-
-unsigned int TriangleListPass::getNodeReservePerTexel()
-{
-    return nodeReservePerTexel();
 }
 
 bool TriangleListPass::overflowed(std::size_t& nodes, std::size_t& triangles) const

@@ -89,8 +89,7 @@ int main(int argc, char** argv)
     if (arguments.read("--list-modes"))
     {
         for (int m = SilhouetteShadowTechnique::SHADOW_MAP; m <= SilhouetteShadowTechnique::SHADOW_VOLUME; ++m)
-            if (SilhouetteShadowTechnique::isModeAvailable(SilhouetteShadowTechnique::Mode(m)))
-                std::cout << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m)) << "\n";
+            std::cout << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m)) << "\n";
         return 0;
     }
     osshar::RenderOptions options;
@@ -109,7 +108,9 @@ int main(int argc, char** argv)
         technique->setBlockerCulling(options.blockerCulling);
         technique->setHybridEdgeMask(options.hybridEdgeMask);
         technique->setPerPixelLighting(options.perPixelLighting);
-        SilhouetteShadowTechnique::setEmptyFaceSkipping(options.skipEmptyFaces);
+        SilhouetteShadowTechnique::Tuning tuning = technique->getTuning();
+        tuning.skipEmptyFaces = options.skipEmptyFaces;
+        technique->setTuning(tuning);
         technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
                                    : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF
                                                                    : SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);

@@ -171,25 +171,26 @@ TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
 // the same picture.
 TEST(HybridMethods, ListImagesAndStorageBlocksGiveTheSamePicture)
 {
-    using osgShadowSilhouette::TriangleListPass;
     ShadowedRender r("cubes", "hybrid", 512, 512, 384);
     ASSERT_TRUE(r.valid());
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
-    ASSERT_TRUE(TriangleListPass::getImageReadsAllowed());
-    ASSERT_TRUE(TriangleListPass::getBlockHeadsAllowed());
+    SilhouetteShadowTechnique::Tuning tuning = r.technique->getTuning();
+    ASSERT_TRUE(tuning.listImageReads);
+    ASSERT_TRUE(tuning.listBlockHeads);
     const ossref::Mask heads = r.mask();
     EXPECT_TRUE(r.technique->getStatistics().listImages) << "GL_MAX_FRAGMENT_IMAGE_UNIFORMS is 32 here";
     EXPECT_TRUE(r.technique->getStatistics().listBlockHeads) << "GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES is 280 here";
-    TriangleListPass::setBlockHeadsAllowed(false);
+    tuning.listBlockHeads = false;
+    r.technique->setTuning(tuning);
     const ossref::Mask images = r.mask();
     EXPECT_TRUE(r.technique->getStatistics().listImages);
     EXPECT_FALSE(r.technique->getStatistics().listBlockHeads);
-    TriangleListPass::setBlockHeadsAllowed(true);
-    TriangleListPass::setImageReadsAllowed(false);
+    tuning.listBlockHeads = true;
+    tuning.listImageReads = false;
+    r.technique->setTuning(tuning);
     const ossref::Mask blocks = r.mask();
     EXPECT_FALSE(r.technique->getStatistics().listImages);
     EXPECT_FALSE(r.technique->getStatistics().listBlockHeads) << "the prologue's blocks come only with the images";
-    TriangleListPass::setImageReadsAllowed(true);
     const ossref::Comparison c = ossref::compareMasks(images, blocks);
     ASSERT_TRUE(c.valid) << c.error;
     EXPECT_EQ(c.wrongPixels, 0) << "the image and storage-block reads of the lists differ";
@@ -421,7 +422,6 @@ TEST(DepthPrepass, LeavesOutWhatItCannotDrawAsTheEyePassDoes)
 // the default scene's ground (two triangles over most of the grid) overflows.
 TEST(HybridMethods, OverflowingListsAreReadBackAndRebuiltLarger)
 {
-    using osgShadowSilhouette::TriangleListPass;
     ossref::Mask control;
     {
         ShadowedRender r("default", "hybrid", 512, 512, 384);
@@ -430,13 +430,13 @@ TEST(HybridMethods, OverflowingListsAreReadBackAndRebuiltLarger)
         control = r.mask();
     }
     osstest::NotifyCapture notes;
-    const unsigned int reserve = TriangleListPass::getNodeReservePerTexel();
-    TriangleListPass::setNodeReservePerTexel(0);
     ShadowedRender r("default", "hybrid", 512, 512, 384);
     ASSERT_TRUE(r.valid());
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    SilhouetteShadowTechnique::Tuning tuning = r.technique->getTuning();
+    tuning.listNodeReservePerTexel = 0;
+    r.technique->setTuning(tuning);
     const ossref::Mask overflowed = r.mask(0, 0); // built and drawn in frame 1; its counts come back in its eye pass
-    TriangleListPass::setNodeReservePerTexel(reserve);
     EXPECT_FALSE(notes.warned("triangle lists of shadow slot 0 needed")) << "the next cull reads them";
     const ossref::Comparison degraded = ossref::compareMasks(overflowed, control);
     ASSERT_TRUE(degraded.valid) << degraded.error;

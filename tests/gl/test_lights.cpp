@@ -545,14 +545,18 @@ TEST_P(EmptyCubeFaces, AreLeftOutAndThePictureStays)
     ShadowedRender r(pairOptions(), c.mode, 512, W, H);
     ASSERT_TRUE(r.valid());
     makePair(r, c.groundCasts);
-    SilhouetteShadowTechnique::setEmptyFaceSkipping(false);
+    SilhouetteShadowTechnique::Tuning tuning = r.technique->getTuning();
+    ASSERT_TRUE(tuning.skipEmptyFaces) << "the default";
+    tuning.skipEmptyFaces = false;
+    r.technique->setTuning(tuning);
     r.renderer->timeFrames(0, 3);
     osg::ref_ptr<osg::Image> every = r.renderer->renderAndCapture();
     const SilhouetteShadowTechnique::Statistics all = r.technique->getStatistics();
     EXPECT_EQ(all.slotsSkipped, 0u);
     ASSERT_EQ(all.shadowPasses, 3u) << "the point light needs cube faces: -x, +x and -z (the boxes' drawable)";
 
-    SilhouetteShadowTechnique::setEmptyFaceSkipping(true);
+    tuning.skipEmptyFaces = true;
+    r.technique->setTuning(tuning);
     r.renderer->timeFrames(0, 3);
     osg::ref_ptr<osg::Image> skipping = r.renderer->renderAndCapture();
     const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
@@ -575,7 +579,6 @@ TEST_P(EmptyCubeFaces, AreLeftOutAndThePictureStays)
     EXPECT_EQ(r.technique->getStatistics().slotsSkipped, 0u) << "the frame that rebuilt";
     r.renderer->timeFrames(0, 3);
     EXPECT_EQ(r.technique->getStatistics().slotsSkipped, c.skips ? s.shadowPasses - 2 : 0u);
-    SilhouetteShadowTechnique::setEmptyFaceSkipping(true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, EmptyCubeFaces,

@@ -132,6 +132,7 @@ TEST(Stress, StencilModesWithoutStencilBufferFallBackToShadowMap)
     std::string error;
     ASSERT_TRUE(osshar::prepareScene(options, scene, error)) << error;
     ASSERT_TRUE(osshar::makeShadowedRoot("volume", 1024, scene, root, technique, error)) << error;
+    EXPECT_EQ(technique->getEffectiveMode(), SilhouetteShadowTechnique::SHADOW_VOLUME) << "nothing rendered yet";
     osshar::Renderer renderer(1024, 768, true, 0);
     ASSERT_TRUE(renderer.valid());
     const osg::GraphicsContext* gc = renderer.viewer().getCamera()->getGraphicsContext();
@@ -141,6 +142,8 @@ TEST(Stress, StencilModesWithoutStencilBufferFallBackToShadowMap)
     renderer.timeFrames(0, 2);
     const SilhouetteShadowTechnique::Statistics s = technique->getStatistics();
     EXPECT_EQ(s.effectiveMode, SilhouetteShadowTechnique::SHADOW_MAP);
+    EXPECT_EQ(technique->getEffectiveMode(), SilhouetteShadowTechnique::SHADOW_MAP);
+    EXPECT_EQ(technique->getMode(), SilhouetteShadowTechnique::SHADOW_VOLUME);
     EXPECT_EQ(s.shadowPasses, 1u) << "the fallback renders the shadow map";
     technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
     osg::ref_ptr<osg::Image> image = renderer.renderAndCapture(osg::Vec4(128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1));

@@ -4,6 +4,7 @@
 #include "StressSupport.h"
 
 #include <osg/ContextData>
+#include <osg/BufferObject>
 #include <osg/GLObjects>
 #include <osg/Texture>
 #include <osgViewer/CompositeViewer>
@@ -175,8 +176,8 @@ TEST_P(StressMode, WindowResize)
 }
 
 // The context is destroyed and a new one renders the same scene graph: releaseGLObjects()
-// frees every texture the technique made in the old context, and the new one renders as
-// accurately as the first.
+// frees every texture and buffer object the technique made in the old context (the stencil
+// modes' volumes among them), and the new one renders as accurately as the first.
 TEST_P(StressMode, ContextDestroyedAndRecreated)
 {
     ShadowedRender r = stressRender(GetParam());
@@ -188,12 +189,15 @@ TEST_P(StressMode, ContextDestroyedAndRecreated)
         osg::State* state = gc->getState();
         const unsigned int contextID = state->getContextID();
         const osg::TextureObjectManager* textures = osg::get<osg::TextureObjectManager>(contextID);
+        const osg::GLBufferObjectManager* buffers = osg::get<osg::GLBufferObjectManager>(contextID);
         EXPECT_GT(textures->getNumberActiveTextureObjects(), 0u);
+        EXPECT_GT(buffers->getNumberActiveGLBufferObjects(), 0u);
         gc->makeCurrent();
         r.root->releaseGLObjects(state);
         osg::flushAllDeletedGLObjects(contextID);
         gc->releaseContext();
         EXPECT_EQ(textures->getNumberActiveTextureObjects(), 0u) << "round " << round << ": textures left behind";
+        EXPECT_EQ(buffers->getNumberActiveGLBufferObjects(), 0u) << "round " << round << ": buffers left behind";
         r.renderer.reset(new osshar::Renderer(STRESS_WIDTH, STRESS_HEIGHT, true));
         ASSERT_TRUE(r.renderer->valid());
         r.renderer->setSceneData(r.root.get());

@@ -1,0 +1,164 @@
+// Internal: the visitors that measure the shadowed scene for a frame (bounds without
+// non-finite geometry, the casters' signature and parts) and tag textured state sets.
+#ifndef OSGSHADOWSILHOUETTE_SCENEVISITORS_H
+#define OSGSHADOWSILHOUETTE_SCENEVISITORS_H
+
+#include <osgShadowSilhouette/LightSpace>
+#include <osgShadowSilhouette/MeshCache>
+#include <osgShadowSilhouette/ShaderConstants>
+#include <osgShadowSilhouette/ViewPoint>
+
+#include <osg/Billboard>
+#include <osg/ComputeBoundsVisitor>
+#include <osg/LOD>
+#include <osgShadow/ShadowedScene>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+/** World bounds of the drawables under the traversal mask, leaving out (and listing) the
+ *  geometry with NaN or infinite vertices, which neither casts nor bounds anything. LOD
+ *  children and billboard drawables are those @p view draws, turned as it turns them
+ *  (each instance's matrix recorded in `billboards`). */
+class FiniteBoundsVisitor : public osg::ComputeBoundsVisitor
+{
+public:
+    FiniteBoundsVisitor(MeshCache& cache, const ViewPoint& view) : _cache(cache), _view(view) {}
+    std::vector<const osg::Drawable*> nonFinite;
+    BillboardMatrices billboards;
+
+    void apply(osg::LOD& lod) override
+    {
+        if (!_view.valid) return traverse(lod);
+        const osg::Matrixd world = current();
+        for (unsigned int i = 0; i < lod.getNumChildren(); ++i)
+            if (_view.isActive(lod, i, world)) lod.getChild(i)->accept(*this);
+    }
+    void apply(osg::Billboard& billboard) override
+    {
+        const osg::Matrixd world = current();
+        for (unsigned int i = 0; i < billboard.getNumDrawables(); ++i)
+        {
+            osg::Drawable* drawable = billboard.getDrawable(i);
+            if (!drawable || !validNodeMask(*drawable)) continue;
+            osg::Matrix turned = _view.billboardMatrix(billboard, i, world);
+            billboards[drawable].push_back(turned);
+            pushMatrix(turned);
+            apply(*drawable);
+            popMatrix();
+        }
+    }
+
+    void apply(osg::Drawable& drawable) override
+    {
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (geometry && !_cache.hasFiniteVertices(*geometry))
+            nonFinite.push_back(&drawable);
+        else
+            osg::ComputeBoundsVisitor::apply(drawable);
+    }
+
+private:
+    osg::Matrixd current() const { return _matrixStack.empty() ? osg::Matrixd() : osg::Matrixd(_matrixStack.back()); }
+
+    MeshCache& _cache;
+    ViewPoint _view;
+};
+
+/** World bounds of the casters and a hash of what a depth pass draws of them: each
+ *  drawable, its world matrix and the versions of its vertex array and primitive sets. */
+class CasterSignatureVisitor : public FiniteBoundsVisitor
+{
+public:
+    CasterSignatureVisitor(MeshCache& cache, const ViewPoint& view) : FiniteBoundsVisitor(cache, view), _meshCache(cache) {}
+    std::size_t signature = 0;
+    std::vector<CasterPart> parts; ///< each finite drawable: world box, and its plane when flat
+
+    void apply(osg::Drawable& drawable) override
+    {
+        FiniteBoundsVisitor::apply(drawable);
+        addPart(drawable);
+        mix(std::hash<const void*>()(&drawable));
+        if (!_matrixStack.empty())
+            for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (!geometry) return;
+        if (const osg::Array* vertices = geometry->getVertexArray())
+        {
+            mix(std::hash<const void*>()(vertices));
+            mix(vertices->getModifiedCount());
+        }
+        for (const auto& primitives : geometry->getPrimitiveSetList())
+        {
+            mix(std::hash<const void*>()(primitives.get()));
+            mix(primitives->getModifiedCount());
+        }
+    }
+
+    void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
+
+private:
+    void addPart(const osg::Drawable& drawable)
+    {
+        const osg::Geometry* geometry = drawable.asGeometry();
+        if (geometry && !_meshCache.hasFiniteVertices(*geometry)) return; // left out, as from the bounds
+        const osg::BoundingBox& local = drawable.getBoundingBox();
+        if (!local.valid()) return;
+        const osg::Matrixd world = _matrixStack.empty() ? osg::Matrixd() : _matrixStack.back();
+        CasterPart part;
+        for (unsigned int i = 0; i < 8; ++i) part.box.expandBy(osg::Vec3d(local.corner(i)) * world);
+        std::array<osg::Vec3d, 3> spanning;
+        if (geometry && _meshCache.getPlane(*geometry, spanning))
+        {
+            for (osg::Vec3d& p : spanning) p = p * world;
+            osg::Vec3d normal = (spanning[1] - spanning[0]) ^ (spanning[2] - spanning[0]);
+            if (normal.normalize() > 0.0 && std::isfinite(normal.x()) && std::isfinite(normal.y()) &&
+                std::isfinite(normal.z()))
+            {
+                part.flat = true;
+                part.planePoint = spanning[0];
+                part.planeNormal = normal;
+            }
+        }
+        parts.push_back(part);
+    }
+
+    MeshCache& _meshCache;
+};
+
+/** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
+ *  receiver shading samples it. */
+class TagBaseTextureVisitor : public osg::NodeVisitor
+{
+public:
+    TagBaseTextureVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Node& node) override
+    {
+        tag(node.getStateSet());
+        traverse(node);
+    }
+    void apply(osg::Drawable& drawable) override { tag(drawable.getStateSet()); }
+
+private:
+    static void tag(osg::StateSet* ss)
+    {
+        if (!ss) return;
+        const osg::StateAttribute* tex = ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE);
+        if (tex && (ss->getTextureMode(0, GL_TEXTURE_2D) & osg::StateAttribute::ON))
+            ss->setDefine(shader::DEFINE_BASE_TEXTURE);
+    }
+};
+
+/** World bounds of the shadowed scene's drawables under @p mask, as @p view sees them,
+ *  without geometry with non-finite vertices. */
+osg::BoundingBoxd boundsOf(osgShadow::ShadowedScene& scene, unsigned int mask, MeshCache& cache, const ViewPoint& view);
+
+} // namespace detail
+} // namespace osgShadowSilhouette
+
+#endif
