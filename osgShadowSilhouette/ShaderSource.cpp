@@ -18,6 +18,17 @@ std::string shaderPrelude()
     std::ostringstream s;
     s << "// osgShadowSilhouette: ShaderConstants\n"
       << "#define OSS_MAX_SCENE_LIGHTS " << shader::MAX_SCENE_LIGHTS << "\n";
+    // Defaults of the defines the technique sets per view (OpenGL inserts those first), for a
+    // program linked outside a shadowed scene.
+    const std::pair<const char*, const char*> defaults[] = {
+        {shader::DEFINE_MAX_SHADOW_LIGHTS, "1"},
+        {shader::DEFINE_MAX_SHADOW_SLOTS, shader::DEFINE_MAX_SHADOW_LIGHTS},
+        {shader::DEFINE_NUM_SHADOW_SLOTS, shader::DEFINE_MAX_SHADOW_SLOTS},
+        {shader::DEFINE_SKIPPED_SLOTS, "0"},
+        {shader::DEFINE_MAX_LIST_SLOTS, shader::DEFINE_MAX_SHADOW_LIGHTS},
+    };
+    for (const auto& d : defaults)
+        s << "#ifndef " << d.first << "\n#define " << d.first << " " << d.second << "\n#endif\n";
     return s.str();
 }
 

@@ -5,9 +5,6 @@
 // position, normal and primary colour; else the vertex stage's colours, interpolated.
 
 #pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_PER_PIXEL_LIGHTING)
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
 
 in vec4 oss_eyePosition;
 #ifdef OSS_PER_PIXEL_LIGHTING

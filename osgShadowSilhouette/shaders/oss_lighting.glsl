@@ -9,9 +9,6 @@
 // light kept apart, so the fragment stage can scale each by its own shadow term.
 
 #pragma import_defines(OSS_MAX_SHADOW_LIGHTS)
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
 
 uniform int oss_numLights;
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];

@@ -10,20 +10,9 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
 #pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS)
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
-#ifndef OSS_MAX_SHADOW_SLOTS
-#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
-#endif
-#ifndef OSS_NUM_SHADOW_SLOTS
-#define OSS_NUM_SHADOW_SLOTS 0
-#endif
-// Bit s: slot s is a cube face with nothing to shadow (its newest build drew no caster), left
-// out: its term is 1 everywhere.
-#ifndef OSS_SKIPPED_SLOTS
-#define OSS_SKIPPED_SLOTS 0
-#endif
+// OSS_SKIPPED_SLOTS, bit s: slot s is a cube face with nothing to shadow (its newest build
+// drew no caster), left out: its term is 1 everywhere. The OSS_MAX_* and slot defines have
+// their defaults in the prelude (ShaderSource.cpp, shaderPrelude()).
 
 in vec4 oss_eyePosition;
 in vec4 oss_texCoord0;

@@ -9,9 +9,6 @@
 // and the fragment stage lights each pixel with the same equation.
 
 #pragma import_defines(OSS_MAX_SHADOW_LIGHTS, OSS_PER_PIXEL_LIGHTING)
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
 
 out vec4 oss_eyePosition;
 out vec4 oss_texCoord0;

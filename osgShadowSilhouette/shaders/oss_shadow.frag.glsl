@@ -10,18 +10,6 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
 #pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
-#ifndef OSS_MAX_SHADOW_SLOTS
-#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
-#endif
-#ifndef OSS_NUM_SHADOW_SLOTS
-#define OSS_NUM_SHADOW_SLOTS OSS_MAX_SHADOW_SLOTS // the slots in use this frame, when the technique sets it
-#endif
-#ifndef OSS_SKIPPED_SLOTS
-#define OSS_SKIPPED_SLOTS 0 // bit s: a cube face left out, term 1 (oss_receiver.frag.glsl)
-#endif
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers

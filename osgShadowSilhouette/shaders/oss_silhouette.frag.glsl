@@ -13,12 +13,6 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
 #ifdef OSS_SILHOUETTE_MAP
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
-#ifndef OSS_MAX_SHADOW_SLOTS
-#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
-#endif
 #define OSS_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a corner
 
 // Where a sample falls in the depth and silhouette maps.

@@ -10,17 +10,8 @@
 
 #pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT)
 #ifdef OSS_TRIANGLE_LISTS
-#ifndef OSS_MAX_SHADOW_LIGHTS
-#define OSS_MAX_SHADOW_LIGHTS 1
-#endif
-#ifndef OSS_MAX_SHADOW_SLOTS
-#define OSS_MAX_SHADOW_SLOTS OSS_MAX_SHADOW_LIGHTS
-#endif
 // Slots 0 .. OSS_MAX_LIST_SLOTS-1 have lists (at most 12, one storage block each: the
 // technique sets it to the slots in use); the others answer with their PCF.
-#ifndef OSS_MAX_LIST_SLOTS
-#define OSS_MAX_LIST_SLOTS OSS_MAX_SHADOW_LIGHTS
-#endif
 
 // Each slot's whole list buffer (layout: oss_trilist.geom.glsl), read 16 bytes at a time:
 // as an RGBA32UI image buffer (OSS_LIST_IMAGES, image unit = slot; where the context has the

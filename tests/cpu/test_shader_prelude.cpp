@@ -45,7 +45,9 @@ std::vector<std::string> lines(const std::string& text)
 TEST(ShaderPrelude, NoShaderFileRepeatsAConstant)
 {
     int files = 0;
-    const std::regex defines(R"(#define\s+OSS_MAX_SCENE_LIGHTS\b)");
+    // The constants, and the defaults of the defines the technique sets per view.
+    const std::regex defines(
+        R"(#define\s+(OSS_MAX_SCENE_LIGHTS|OSS_MAX_SHADOW_LIGHTS|OSS_MAX_SHADOW_SLOTS|OSS_NUM_SHADOW_SLOTS|OSS_SKIPPED_SLOTS|OSS_MAX_LIST_SLOTS)\b)");
     const std::regex sizedByNumber(R"(oss_lightIndex\s*\[\s*\d+\s*\])");
     const std::regex clampedByNumber(R"(clamp\s*\(\s*oss_maskLight\s*,\s*0\s*,\s*\d+\s*\))");
     for (const fs::directory_entry& entry : fs::directory_iterator(shaderDir()))
@@ -54,7 +56,8 @@ TEST(ShaderPrelude, NoShaderFileRepeatsAConstant)
         ++files;
         const std::string text = readText(entry.path());
         const std::string name = entry.path().filename().string();
-        EXPECT_FALSE(std::regex_search(text, defines)) << name << " defines OSS_MAX_SCENE_LIGHTS itself";
+        std::smatch m;
+        EXPECT_FALSE(std::regex_search(text, m, defines)) << name << " defines " << m.str(1) << " itself";
         EXPECT_FALSE(std::regex_search(text, sizedByNumber)) << name << " sizes oss_lightIndex with a number";
         EXPECT_FALSE(std::regex_search(text, clampedByNumber)) << name << " clamps a light index with a number";
     }
@@ -81,6 +84,10 @@ TEST(ShaderPrelude, LoadedShadersDefineTheConstantsAfterTheirVersionLine)
                 "#define OSS_MAX_SCENE_LIGHTS " + std::to_string(osgShadowSilhouette::shader::MAX_SCENE_LIGHTS);
             auto at = std::find(text.begin(), text.end(), define);
             ASSERT_NE(at, text.end()) << shader->getName() << " lacks '" << define << "'";
+            for (const char* defaulted : {"OSS_MAX_SHADOW_LIGHTS", "OSS_MAX_SHADOW_SLOTS", "OSS_NUM_SHADOW_SLOTS",
+                                          "OSS_SKIPPED_SLOTS", "OSS_MAX_LIST_SLOTS"})
+                EXPECT_NE(std::find(text.begin(), text.end(), std::string("#ifndef ") + defaulted), text.end())
+                    << shader->getName() << " lacks the default of " << defaulted;
             auto line = std::find_if(at, text.end(), [](const std::string& l) { return l.rfind("#line", 0) == 0; });
             ASSERT_NE(line, text.end()) << shader->getName() << ": no #line after the prelude";
             EXPECT_EQ(*line, "#line 2") << shader->getName() << ": the file's second line keeps its number";
