@@ -1,23 +1,11 @@
 #include <osgShadowSilhouette/GpuQueries>
+#include "GLConstants.h"
 
 #include <osg/Depth>
 #include <osg/FrameStamp>
 #include <osg/GLExtensions>
 #include <osg/observer_ptr>
 #include <osg/State>
-
-#ifndef GL_ANY_SAMPLES_PASSED
-#define GL_ANY_SAMPLES_PASSED 0x8C2F
-#endif
-#ifndef GL_QUERY_WAIT
-#define GL_QUERY_WAIT 0x8E13
-#endif
-#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
-#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
-#endif
-#ifndef GL_DEPTH_CLAMP
-#define GL_DEPTH_CLAMP 0x864F
-#endif
 
 namespace osgShadowSilhouette {
 

@@ -17,7 +17,8 @@ std::string shaderPrelude()
 {
     std::ostringstream s;
     s << "// osgShadowSilhouette: ShaderConstants\n"
-      << "#define OSS_MAX_SCENE_LIGHTS " << shader::MAX_SCENE_LIGHTS << "\n";
+      << "#define OSS_MAX_SCENE_LIGHTS " << shader::MAX_SCENE_LIGHTS << "\n"
+      << "#define OSS_SCREEN_VISIBILITY_UNIT " << shader::SCREEN_VISIBILITY_IMAGE_UNIT << "\n";
     // Defaults of the defines the technique sets per view (OpenGL inserts those first), for a
     // program linked outside a shadowed scene.
     const std::pair<const char*, const char*> defaults[] = {

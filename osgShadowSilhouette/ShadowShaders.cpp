@@ -6,7 +6,10 @@
 #include "ProgramLinkCheck.h"
 #include "ShaderSource.h"
 
+#include <algorithm>
+
 #include <OpenThreads/ScopedLock>
+#include <osg/observer_ptr>
 #include <osgUtil/CullVisitor>
 
 namespace osgShadowSilhouette {
@@ -18,22 +21,43 @@ void SilhouetteShadowTechnique::createShadowShaders() const
     _shadowFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SHADOW_FRAG);
     _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
     _listTermFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
+    _screenVisibilityFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SCREEN_VISIBILITY_FRAG);
 }
 
 std::vector<osg::ref_ptr<osg::Shader>> SilhouetteShadowTechnique::getShadowShaders() const
 {
     createShadowShaders();
     std::vector<osg::ref_ptr<osg::Shader>> shaders;
-    for (osg::Shader* s : {_shadowFragmentShader.get(), _silhouetteFragmentShader.get(), _listTermFragmentShader.get()})
+    for (osg::Shader* s : {_shadowFragmentShader.get(), _silhouetteFragmentShader.get(), _listTermFragmentShader.get(),
+                           _screenVisibilityFragmentShader.get()})
         if (s) shaders.push_back(s); // a shader that cannot be found has been warned about
     return shaders;
+}
+
+void SilhouetteShadowTechnique::linkShadowShaders(osg::Program* program) const
+{
+    if (!program) return;
+    for (const osg::ref_ptr<osg::Shader>& s : getShadowShaders()) program->addShader(s.get()); // skips those it holds
+    watchProgramLink(program);
 }
 
 void SilhouetteShadowTechnique::addShadowShaders(osg::Program* program) const
 {
     if (!program) return;
-    for (const osg::ref_ptr<osg::Shader>& s : getShadowShaders()) program->addShader(s.get()); // skips those it holds
-    watchProgramLink(program);
+    linkShadowShaders(program);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_shadowShadersMutex);
+    for (const osg::observer_ptr<osg::Program>& known : _applicationPrograms)
+        if (known == program) return;
+    _applicationPrograms.emplace_back(program);
+}
+
+bool SilhouetteShadowTechnique::hasApplicationPrograms() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_shadowShadersMutex);
+    _applicationPrograms.erase(std::remove_if(_applicationPrograms.begin(), _applicationPrograms.end(),
+                                              [](const osg::observer_ptr<osg::Program>& p) { return !p.valid(); }),
+                               _applicationPrograms.end());
+    return !_applicationPrograms.empty();
 }
 
 osg::Shader* SilhouetteShadowTechnique::getShadowFragmentShader() const

@@ -1,4 +1,6 @@
 #include <osgShadowSilhouette/ShadowVolumes>
+#include "GLConstants.h"
+#include <osgShadowSilhouette/ShaderConstants>
 
 #include <osg/BlendFunc>
 #include <osg/ColorMask>
@@ -383,6 +385,8 @@ constexpr unsigned int MASK_BIT = 0x80;   // HYBRID: silhouette pixel
 constexpr unsigned int COUNT_BITS = 0x7f; // HYBRID: the volumes' count
 constexpr int OUTER_BIN = 5;              // after the opaque bin (0), before transparent (10)
 constexpr int BINS_PER_LIGHT = 10;
+// Screen-space visibility's final pass: after every light's bins (slots < 64).
+constexpr int FINAL_BIN = 1 + BINS_PER_LIGHT * 64;
 // Bins of one light, from 1 + BINS_PER_LIGHT * slot on.
 enum LightBin
 {
@@ -396,10 +400,6 @@ enum LightBin
     BIN_LIT,
     BIN_LIT_SHADOW_MAP
 };
-
-#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
-#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
-#endif
 
 /** A node holding one drawable (a counter's begin or end) in render bin `bin`. */
 osg::ref_ptr<osg::StateSet> passState(int bin, osg::Program* program)
@@ -424,6 +424,15 @@ void addLightState(osg::StateSet& ss, unsigned int ref, unsigned int mask, bool 
         ss.setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), on);
     else
         ss.setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+}
+
+/** Screen-space visibility: a light pass marks its bit (OSS_VISIBILITY_MARK) and writes no colour. */
+void addMarkState(osg::StateSet& ss)
+{
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    ss.setDefine(shader::DEFINE_VISIBILITY_MARK);
+    ss.setAttribute(new osg::ColorMask(false, false, false, false), on);
+    ss.setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
 }
 
 /** HYBRID mask pass: sets MASK_BIT where the fragment survives; writes no colour or depth. */
@@ -470,6 +479,9 @@ void StencilShadowPasses::forEachHolder(const Apply& apply) const
     apply(_volume.get());
     apply(_base.get());
     apply(_outer.get());
+    apply(_barrier.get());
+    apply(_finalPass.get());
+    apply(_finalBarrierState.get());
     for (const Slot& s : _slots)
     {
         apply(s.volumes.get());
@@ -516,6 +528,7 @@ void StencilShadowPasses::build(Slot& s) const
     s.litState->setDefine("OSS_LIGHT_NUM", light);
     // Count 0 is lit; HYBRID: only at silhouette pixels (mask bit set, count 0).
     addLightState(*s.litState, s.hybrid ? MASK_BIT : 0u, s.hybrid ? 0xffu : 0xffu, !s.mask);
+    if (s.mark) addMarkState(*s.litState);
     if (!s.hybrid) return;
 
     s.maskCounter = new GpuCounter(GL_SAMPLES_PASSED);
@@ -530,19 +543,31 @@ void StencilShadowPasses::build(Slot& s) const
     s.litShadowMapState->setDefine("OSS_LIGHT_NUM", light);
     s.litShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
     addLightState(*s.litShadowMapState, 0u, MASK_BIT, !s.mask);
+    if (s.mark) addMarkState(*s.litShadowMapState);
 }
 
-StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& light, bool hybrid, bool mask)
+void StencilShadowPasses::setScreenVisibility(osg::Node* barrier, osg::StateSet* finalPass)
+{
+    _barrier = finalPass ? barrier : nullptr;
+    _finalPass = barrier ? finalPass : nullptr;
+    if (!_finalPass) return;
+    _finalPass->setRenderBinDetails(FINAL_BIN, "RenderBin");
+    if (!_finalBarrierState) _finalBarrierState = passState(FINAL_BIN - 1, nullptr);
+}
+
+StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& light, bool hybrid, bool mask,
+                                                         bool mark)
 {
     if (_slots.size() <= light.slot) _slots.resize(light.slot + 1);
     Slot& s = _slots[light.slot];
-    if (!s.volumes || s.lightNum != light.lightNum || s.hybrid != hybrid || s.mask != mask)
+    if (!s.volumes || s.lightNum != light.lightNum || s.hybrid != hybrid || s.mask != mask || s.mark != mark)
     {
         const bool keepVolumes = s.volumes && s.hybrid == hybrid;
         s.slot = light.slot;
         s.lightNum = light.lightNum;
         s.hybrid = hybrid;
         s.mask = mask;
+        s.mark = mark;
         // The volumes depend on the light and the mode only: a debug view keeps them.
         const osg::ref_ptr<ShadowVolumeGroup> volumes = keepVolumes ? s.volumes : nullptr;
         build(s);
@@ -571,14 +596,16 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     };
     const osg::Vec3d eye = osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans();
     const double nearRadius = nearPlaneRadius(cv);
+    const bool mask = maskSlot >= 0;
+    const bool mark = _finalPass && !mask;
     cv.pushStateSet(_outer.get());
     for (const StencilLight& light : lights)
     {
-        const bool mask = maskSlot >= 0;
         if (mask && int(light.slot) != maskSlot) continue;
-        Slot& s = slotFor(light, hybrid, mask);
+        Slot& s = slotFor(light, hybrid, mask, mark);
         cv.pushStateSet(s.clearState.get());
         s.clear->accept(cv);
+        if (mark) _barrier->accept(cv); // the base pass's clear (or the last light's marks) first
         cv.popStateSet();
 
         if (s.hybrid)
@@ -606,6 +633,13 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
 
         cullReceivers(s.litState.get());
         if (s.hybrid) cullReceivers(s.litShadowMapState.get());
+    }
+    if (mark)
+    {
+        cv.pushStateSet(_finalBarrierState.get());
+        _barrier->accept(cv);
+        cv.popStateSet();
+        cullReceivers(_finalPass.get());
     }
     cv.popStateSet();
 }

@@ -4,6 +4,7 @@
 
 #include "EyePass.h"
 #include "RenderLeaves.h"
+#include "ScreenVisibility.h"
 #include "SceneVisitors.h"
 #include "ShaderSource.h"
 
@@ -81,6 +82,7 @@ enum WarningKey
     WARN_CONTEXT_MAP_SIZE,
     WARN_LIGHT_NUM,
     WARN_DEBUG_LIGHT,
+    WARN_SCREEN_VISIBILITY,
 };
 
 osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
@@ -382,7 +384,7 @@ void SilhouetteShadowTechnique::init()
     _receiverProgram->setName("osgShadowSilhouette receiver");
     _receiverProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _receiverProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_RECEIVER_FRAG));
-    addShadowShaders(_receiverProgram.get());
+    linkShadowShaders(_receiverProgram.get());
     _listStateSet = TriangleListPass::createSharedStateSet();
     _listFrontOnlyStateSet = new osg::StateSet;
     _listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
@@ -395,7 +397,7 @@ void SilhouetteShadowTechnique::init()
     _stencilProgram->setName("osgShadowSilhouette stencil passes");
     _stencilProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
     _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
-    addShadowShaders(_stencilProgram.get());
+    linkShadowShaders(_stencilProgram.get());
     // The lighting equation in the receivers' vertex and fragment stages, one source
     // (PerPixelLighting chooses where it runs).
     for (const osg::ref_ptr<osg::Shader>& lighting :
@@ -513,6 +515,7 @@ void SilhouetteShadowTechnique::applyToGLObjects(const GLObjectsOp& op) const
         op(_shadowFragmentShader.get());
         op(_silhouetteFragmentShader.get());
         op(_listTermFragmentShader.get());
+        op(_screenVisibilityFragmentShader.get());
         op(_programLinkCheck.get());
     }
     for (const auto& entry : _viewDataMap)
@@ -522,6 +525,7 @@ void SilhouetteShadowTechnique::applyToGLObjects(const GLObjectsOp& op) const
         op(vd.receiverPassStateSet.get());
         op(vd.prepassStateSet.get());
         op(vd.stencil.get());
+        op(static_cast<detail::ScreenVisibility*>(vd.screenVisibility.get()));
         op(vd.exactCounter.get());
         op(vd.exactBegin.get());
         op(vd.exactEnd.get());
@@ -763,6 +767,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                                       osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
+    stats.screenVisibility = cullScreenVisibility(cv, vd, stencilMode);
     std::size_t casterTriangles = 0;
     for (const Caster& caster : frame.casterList) casterTriangles += caster.mesh->getAdjacency().report.inputTriangles;
     const osg::Viewport* eyeViewport = cv.getViewport();
@@ -1245,6 +1250,42 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     stats.volumeFragments = vd.stencil->getVolumeFragments();
     stats.blockersTested = vd.stencil->getBlockersTested();
     stats.blockersSkipped = vd.stencil->getBlockersHidden();
+}
+
+bool SilhouetteShadowTechnique::cullScreenVisibility(osgUtil::CullVisitor& cv, ViewData& vd, bool stencilMode)
+{
+    // The mask and class views draw the technique's own answer, one light at a time.
+    bool use = stencilMode && _debugView != DEBUG_SHADOW_MASK && _debugView != DEBUG_CLASSES && hasApplicationPrograms();
+    const osg::Viewport* viewport = cv.getViewport();
+    if (use && (!viewport || !cv.getState() || !detail::ScreenVisibility::supported(cv.getState()->getContextID())))
+    {
+        warnOnce(WARN_SCREEN_VISIBILITY,
+                 std::string("Mode ") + modeName(_mode) +
+                     ": the graphics context has no image load/store (OpenGL 4.2), which the stencil modes need to "
+                     "draw the receivers with the programs given to addShadowShaders(); those receivers show the "
+                     "technique's shading instead");
+        use = false;
+    }
+    auto* visibility = static_cast<detail::ScreenVisibility*>(vd.screenVisibility.get());
+    if (use && !visibility) vd.screenVisibility = visibility = new detail::ScreenVisibility;
+    const unsigned int unit = shader::SCREEN_VISIBILITY_IMAGE_UNIT;
+    if (use)
+    {
+        visibility->fit(*viewport);
+        vd.receiverStateSet->setAttributeAndModes(visibility->getBinding(), EYE_PASS_BINDING);
+        vd.receiverPassStateSet->setDefine(shader::DEFINE_VISIBILITY_CLEAR);
+    }
+    else
+    {
+        if (visibility && vd.receiverStateSet->getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit) ==
+                              visibility->getBinding())
+            vd.receiverStateSet->removeAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit);
+        vd.receiverPassStateSet->removeDefine(shader::DEFINE_VISIBILITY_CLEAR);
+    }
+    if (vd.stencil)
+        vd.stencil->setScreenVisibility(use ? visibility->getBarrier() : nullptr,
+                                        use ? visibility->getFinalPass() : nullptr);
+    return use;
 }
 
 void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const

@@ -1,4 +1,5 @@
 #include <osgShadowSilhouette/TriangleListPass>
+#include "GLConstants.h"
 #include <osgShadowSilhouette/ShaderConstants>
 
 #include "RenderLeaves.h"
@@ -19,25 +20,6 @@
 #include <map>
 #include <vector>
 
-#ifndef GL_SHADER_STORAGE_BARRIER_BIT
-#define GL_SHADER_STORAGE_BARRIER_BIT 0x00002000
-#endif
-#ifndef GL_SHADER_IMAGE_ACCESS_BARRIER_BIT
-#define GL_SHADER_IMAGE_ACCESS_BARRIER_BIT 0x00000020
-#endif
-#ifndef GL_TEXTURE_FETCH_BARRIER_BIT
-#define GL_TEXTURE_FETCH_BARRIER_BIT 0x00000008
-#endif
-#ifndef GL_SHADER_STORAGE_BUFFER
-#define GL_SHADER_STORAGE_BUFFER 0x90D2
-#endif
-#ifndef GL_R32UI
-#define GL_R32UI 0x8236
-#endif
-#ifndef GL_RED_INTEGER
-#define GL_RED_INTEGER 0x8D94
-#endif
-
 namespace osgShadowSilhouette {
 
 namespace {
@@ -50,20 +32,6 @@ void memoryBarrier(osg::RenderInfo& info)
     const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
     if (ext && ext->glMemoryBarrier) ext->glMemoryBarrier(ALL_LIST_BARRIERS);
 }
-
-#ifndef GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS
-#define GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS 0x90DA
-#endif
-
-#ifndef GL_MAX_FRAGMENT_IMAGE_UNIFORMS
-#define GL_MAX_FRAGMENT_IMAGE_UNIFORMS 0x90CE
-#endif
-#ifndef GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES
-#define GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES 0x8F39
-#endif
-#ifndef GL_MAX_TEXTURE_BUFFER_SIZE
-#define GL_MAX_TEXTURE_BUFFER_SIZE 0x8C2B
-#endif
 
 /** The eye pass's limits of one context, 0 until a list pass has asked. */
 struct ContextLimits

@@ -10,6 +10,7 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
 #pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
+#pragma import_defines(OSS_SCREEN_VISIBILITY)
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
@@ -313,10 +314,18 @@ int oss_shadowSlotOf(int light)
 
 // The shadow term of GL light `light` (gl_LightSource index) at an eye-space position:
 // 1 where the light reaches the point, 0 where it is blocked; unshadowed lights give 1.
+#ifdef OSS_SCREEN_VISIBILITY
+float oss_screenVisibilityTerm(int slot); // the stencil modes' answer (oss_screen_visibility.frag.glsl)
+#endif
+
 float oss_shadowTerm(int light, vec4 eyePosition)
 {
     int slot = oss_shadowSlotOf(light);
+#ifdef OSS_SCREEN_VISIBILITY
+    return slot < 0 ? 1.0 : oss_screenVisibilityTerm(slot);
+#else
     return slot < 0 ? 1.0 : oss_shadowSlotTerm(slot, eyePosition);
+#endif
 }
 
 // A face counts as facing a light when N.L exceeds this, not merely 0: a face that contains

@@ -13,6 +13,10 @@
 //                          strictly between 0 and 1; every other fragment is discarded
 //   OSS_LIGHT_FACES=bits   HYBRID's mask and shadow-map light passes: the slots of the light's
 //                          maps (bit s: slot s; a point light's cube faces), read by oss_lightPcf()
+//   OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK  with an application's program on receivers:
+//                          the base pass clears the screen-space visibility image, a light
+//                          pass sets its slot's bit instead of adding colour
+//                          (oss_screen_visibility.frag.glsl)
 // With OSS_DEBUG_MASK the passes write the MEASURE.md mask of the light instead: the base
 // pass 0 (1 where an unshadowed light faces the surface), the light pass 1 where the surface
 // faces the light. With OSS_DEBUG_CLASSES they
@@ -20,6 +24,7 @@
 // light, red / blue where HYBRID's shadow map answers lit / shadowed.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK, OSS_HYBRID_EDGES)
+#pragma import_defines(OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK)
 #ifndef OSS_LIGHT_NUM
 #define OSS_LIGHT_NUM 0
 #endif
@@ -40,6 +45,12 @@ bool oss_lightEdges(int slot, vec4 eyePosition); // the light's edge mask (oss_s
 #endif
 
 bool oss_facesLight(int n, vec3 p);
+#ifdef OSS_VISIBILITY_CLEAR
+void oss_clearVisibility(); // oss_screen_visibility.frag.glsl
+#endif
+#ifdef OSS_VISIBILITY_MARK
+void oss_markVisible(int slot);
+#endif
 vec4 oss_classColor(bool silhouette, bool lit);
 
 #ifdef OSS_DEBUG_MASK
@@ -90,6 +101,10 @@ void main()
     gl_FragColor = oss_classColor(true, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz));
 #elif defined(OSS_DEBUG_MASK)
     gl_FragColor = vec4(vec3(oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) ? visible : 0.0), 1.0);
+#elif defined(OSS_VISIBILITY_MARK)
+    if (visible > 0.5)
+        oss_markVisible(OSS_LIGHT_PASS);
+    gl_FragColor = vec4(0.0); // colour writes are off
 #else
     gl_FragColor = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0));
 #endif
@@ -99,6 +114,9 @@ void main()
 #elif defined(OSS_DEBUG_CLASSES)
     gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0); // shadowed until a light pass says otherwise
 #else
+#ifdef OSS_VISIBILITY_CLEAR
+    oss_clearVisibility();
+#endif
     gl_FragColor = oss_textured(oss_unshadowedColor);
 #endif
 #endif
