@@ -1,10 +1,11 @@
 // An application's own program on the receivers: linked with the technique's shadow shaders
-// (getShadowShaders(), README "Your own shaders") it calls oss_shadowTerm() and its picture
-// shows the exact shadow in the modes that shade with it (SHADOW_MAP, SILHOUETTE_MAP, HYBRID
-// with triangle lists). The stencil modes (SHADOW_VOLUME, HYBRID with stencil volumes) draw
-// their eye passes with their own program, OVERRIDE: the program is not used there, and the
-// technique's shading shows the exact shadow instead. A program that fails to link is
-// reported as a warning that names it.
+// (addShadowShaders(), README "Your own shaders") it calls oss_shadowTerm() and its picture
+// shows the exact shadow in every mode. The map modes read the term in the program's own
+// pass; the stencil modes (SHADOW_VOLUME, HYBRID with stencil volumes) leave each light's
+// stencil answer in a screen-space visibility image and draw the receivers once more with the
+// program, whose term reads it. A program that fails to link is reported as a warning that
+// names it.
+#include "GLErrors.h"
 #include "GLTestSupport.h"
 #include "NotifyCapture.h"
 
@@ -106,7 +107,7 @@ struct ModeCase
     const char* name;
     const char* mode;
     SilhouetteShadowTechnique::HybridMethod method;
-    bool usesProgram;   ///< false: a stencil mode, its eye passes override the program
+    bool stencil;       ///< a stencil mode: the program draws from the screen-space visibility
     double maxWrongPct; ///< measured with this test's scene and map size, plus a margin
 };
 
@@ -120,6 +121,7 @@ TEST_P(UserShaders, ProgramLinksAndShowsTheExactShadow)
 {
     const ModeCase& c = GetParam();
     osstest::NotifyCapture notices;
+    osshar::GLErrorCounter& errors = osshar::installGLErrorCounter();
     ShadowedRender r("default", c.mode, 1024, 512, 384);
     ASSERT_TRUE(r.valid());
     ASSERT_EQ(r.scene.lights.size(), 1u);
@@ -127,48 +129,42 @@ TEST_P(UserShaders, ProgramLinksAndShowsTheExactShadow)
     osg::ref_ptr<osg::Program> program = userProgram();
     r.technique->addShadowShaders(program.get());
     r.scene.content->getOrCreateStateSet()->setAttributeAndModes(program.get());
+    errors.reset();
     r.renderer->timeFrames(0, 3);
     const UserPicture picture = renderUserPicture(r);
+    EXPECT_EQ(errors.count(), 0) << "OpenGL errors while the program drew in " << c.name;
     EXPECT_EQ(r.technique->getStatistics().triangleLists, c.method == SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
     EXPECT_FALSE(notices.warned("failed to link")) << notices.warnings();
+    EXPECT_EQ(r.technique->getStatistics().screenVisibility, c.stencil);
     const ossref::Mask reference = r.reference();
-    if (c.usesProgram)
-    {
-        // Every pixel of the scene drawn by the program.
-        EXPECT_GT(picture.userPixels, 50000);
-        EXPECT_EQ(picture.others, 0) << "pixels not drawn by the program";
-        const ossref::Comparison cmp = ossref::compareMasks(picture.mask, reference);
-        ASSERT_TRUE(cmp.valid) << cmp.error;
-        std::cout << c.name << ": " << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels << "\n";
-        EXPECT_LT(cmp.coverageMismatch, 10);
-        EXPECT_LT(cmp.wrongPct, c.maxWrongPct) << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels;
-    }
-    else
-    {
-        EXPECT_EQ(picture.userPixels, 0) << "the stencil passes draw with their own program";
-        EXPECT_GT(picture.others, 50000);
-        const ossref::Comparison cmp = ossref::compareMasks(r.mask(0, 1), reference);
-        ASSERT_TRUE(cmp.valid) << cmp.error;
-        std::cout << c.name << " (technique's shading): " << cmp.wrongPixels << " wrong pixels of "
-                  << cmp.geometryPixels << "\n";
-        EXPECT_LT(cmp.wrongPct, c.maxWrongPct) << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels;
-    }
+    // Every pixel of the scene drawn by the program.
+    EXPECT_GT(picture.userPixels, 50000);
+    EXPECT_EQ(picture.others, 0) << "pixels not drawn by the program";
+    const ossref::Comparison cmp = ossref::compareMasks(picture.mask, reference);
+    ASSERT_TRUE(cmp.valid) << cmp.error;
+    std::cout << c.name << ": " << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels << "\n";
+    EXPECT_LT(cmp.coverageMismatch, 10);
+    EXPECT_LT(cmp.wrongPct, c.maxWrongPct) << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels;
+    // The technique's own mask (DebugView) is the same answer.
+    const ossref::Comparison own = ossref::compareMasks(r.mask(0, 1), reference);
+    ASSERT_TRUE(own.valid) << own.error;
+    EXPECT_LT(own.wrongPct, c.maxWrongPct) << own.wrongPixels << " wrong pixels of the technique's mask";
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Modes, UserShaders,
     // Measured at 512 x 384 with a map of 1024: 56 wrong pixels of 149259 (0.038%: the shadow
     // map's edge aliasing), 2, 1, 1 and 1.
-    ::testing::Values(ModeCase{"shadowmap", "shadowmap", SilhouetteShadowTechnique::HYBRID_AUTO, true, 0.06},
-                      ModeCase{"silhouette", "silhouette", SilhouetteShadowTechnique::HYBRID_AUTO, true, 0.01},
-                      ModeCase{"volume", "volume", SilhouetteShadowTechnique::HYBRID_AUTO, false, 0.01},
-                      ModeCase{"hybrid_lists", "hybrid", SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS, true, 0.01},
-                      ModeCase{"hybrid_stencil", "hybrid", SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES, false,
+    ::testing::Values(ModeCase{"shadowmap", "shadowmap", SilhouetteShadowTechnique::HYBRID_AUTO, false, 0.06},
+                      ModeCase{"silhouette", "silhouette", SilhouetteShadowTechnique::HYBRID_AUTO, false, 0.01},
+                      ModeCase{"volume", "volume", SilhouetteShadowTechnique::HYBRID_AUTO, true, 0.01},
+                      ModeCase{"hybrid_lists", "hybrid", SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS, false, 0.01},
+                      ModeCase{"hybrid_stencil", "hybrid", SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES, true,
                                0.01}),
     [](const ::testing::TestParamInfo<ModeCase>& info) { return std::string(info.param.name); });
 
 // One program, given the shaders once in SHADOW_MAP, stays linked and right when the mode
-// changes to those whose terms it calls through the other shaders.
+// changes to those whose terms it calls through the other shaders, and to the stencil modes.
 TEST(UserShaderModes, ProgramStaysValidWhenTheModeChanges)
 {
     osstest::NotifyCapture notices;
@@ -177,25 +173,105 @@ TEST(UserShaderModes, ProgramStaysValidWhenTheModeChanges)
     osg::ref_ptr<osg::Program> program = userProgram();
     r.technique->addShadowShaders(program.get());
     r.scene.content->getOrCreateStateSet()->setAttributeAndModes(program.get());
-    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
     const ossref::Mask reference = r.reference();
     // The bounds of ProgramLinksAndShowsTheExactShadow's cases.
-    const std::pair<SilhouetteShadowTechnique::Mode, double> steps[] = {{SilhouetteShadowTechnique::SHADOW_MAP, 0.06},
-                                                                       {SilhouetteShadowTechnique::SILHOUETTE_MAP, 0.01},
-                                                                       {SilhouetteShadowTechnique::HYBRID, 0.01}};
-    for (const auto& [mode, maxWrongPct] : steps)
+    struct Step
     {
-        r.technique->setMode(mode);
+        SilhouetteShadowTechnique::Mode mode;
+        SilhouetteShadowTechnique::HybridMethod method;
+        double maxWrongPct;
+    };
+    const Step steps[] = {{SilhouetteShadowTechnique::SHADOW_MAP, SilhouetteShadowTechnique::HYBRID_AUTO, 0.06},
+                          {SilhouetteShadowTechnique::SILHOUETTE_MAP, SilhouetteShadowTechnique::HYBRID_AUTO, 0.01},
+                          {SilhouetteShadowTechnique::HYBRID, SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS, 0.01},
+                          {SilhouetteShadowTechnique::SHADOW_VOLUME, SilhouetteShadowTechnique::HYBRID_AUTO, 0.01},
+                          {SilhouetteShadowTechnique::HYBRID, SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES, 0.01},
+                          {SilhouetteShadowTechnique::SHADOW_MAP, SilhouetteShadowTechnique::HYBRID_AUTO, 0.06}};
+    for (const Step& step : steps)
+    {
+        r.technique->setMode(step.mode);
+        r.technique->setHybridMethod(step.method);
         r.renderer->timeFrames(0, 3);
-        EXPECT_EQ(r.technique->getStatistics().effectiveMode, mode);
+        EXPECT_EQ(r.technique->getStatistics().effectiveMode, step.mode);
         const UserPicture picture = renderUserPicture(r);
-        EXPECT_GT(picture.userPixels, 50000) << "mode " << mode;
-        EXPECT_EQ(picture.others, 0) << "mode " << mode;
+        EXPECT_GT(picture.userPixels, 50000) << "mode " << step.mode;
+        EXPECT_EQ(picture.others, 0) << "mode " << step.mode;
         const ossref::Comparison cmp = ossref::compareMasks(picture.mask, reference);
         ASSERT_TRUE(cmp.valid) << cmp.error;
-        EXPECT_LT(cmp.wrongPct, maxWrongPct) << "mode " << mode << ": " << cmp.wrongPixels << " wrong pixels";
+        EXPECT_LT(cmp.wrongPct, step.maxWrongPct) << "mode " << step.mode << ": " << cmp.wrongPixels << " wrong pixels";
     }
     EXPECT_FALSE(notices.warned("failed to link")) << notices.warnings();
+}
+
+/** USER_FRAGMENT for GL light `light` instead of light 0. */
+std::string userFragmentFor(int light)
+{
+    std::string source = USER_FRAGMENT;
+    for (const std::string& call : {std::string("oss_shadowTerm(0,"), std::string("gl_LightSource[0]")})
+    {
+        const std::size_t at = source.find(call);
+        source.replace(at, call.size(), call.substr(0, call.size() - 2) + std::to_string(light) + call.back());
+    }
+    return source;
+}
+
+// Two lights (a directional one and a point light with its cube faces), each with its own
+// bit of the stencil modes' visibility: the program's mask of either light is the exact one.
+TEST(UserShaderModes, StencilModesKeepEachLightsAnswer)
+{
+    osshar::RenderOptions options;
+    options.scene = "default";
+    osshar::LightArg sun, point;
+    sun.vector = osg::Vec3d(0.45, -0.35, 0.82);
+    point.directional = false;
+    point.vector = osg::Vec3d(-6.0, -2.6, 10.0);
+    options.lights = {sun, point};
+    for (const char* mode : {"volume", "hybrid"})
+    {
+        ShadowedRender r(options, mode, 1024, 512, 384);
+        ASSERT_TRUE(r.valid());
+        ASSERT_EQ(r.scene.lights.size(), 2u);
+        r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+        for (int light = 0; light < 2; ++light)
+        {
+            osg::ref_ptr<osg::Program> program = userProgram(userFragmentFor(light).c_str());
+            r.technique->addShadowShaders(program.get());
+            r.scene.content->getOrCreateStateSet()->setAttributeAndModes(program.get());
+            r.renderer->timeFrames(0, 3);
+            EXPECT_TRUE(r.technique->getStatistics().screenVisibility) << mode;
+            EXPECT_EQ(r.technique->getStatistics().lightsShadowed, 2u) << mode;
+            const UserPicture picture = renderUserPicture(r);
+            EXPECT_GT(picture.userPixels, 50000) << mode << " light " << light;
+            const ossref::Comparison cmp = ossref::compareMasks(picture.mask, r.reference(light));
+            ASSERT_TRUE(cmp.valid) << cmp.error;
+            std::cout << mode << " light " << light << ": " << cmp.wrongPixels << " wrong pixels of "
+                      << cmp.geometryPixels << "\n";
+            EXPECT_LT(cmp.wrongPct, 0.01) << mode << " light " << light << ": " << cmp.wrongPixels << " wrong pixels";
+        }
+    }
+}
+
+// The stencil modes draw from the visibility only while a program given to
+// addShadowShaders() lives: without one, the technique's additive passes draw as before.
+TEST(UserShaderModes, StencilPassesReturnWhenTheProgramIsGone)
+{
+    ShadowedRender r("default", "volume", 1024, 512, 384);
+    ASSERT_TRUE(r.valid());
+    {
+        osg::ref_ptr<osg::Program> program = userProgram();
+        r.technique->addShadowShaders(program.get());
+        r.scene.content->getOrCreateStateSet()->setAttributeAndModes(program.get());
+        r.renderer->timeFrames(0, 2);
+        EXPECT_TRUE(r.technique->getStatistics().screenVisibility);
+        r.scene.content->getOrCreateStateSet()->removeAttribute(program.get());
+    }
+    r.renderer->timeFrames(0, 2);
+    EXPECT_FALSE(r.technique->getStatistics().screenVisibility);
+    const UserPicture picture = renderUserPicture(r);
+    EXPECT_EQ(picture.userPixels, 0);
+    const ossref::Comparison cmp = ossref::compareMasks(r.mask(0, 1), r.reference());
+    ASSERT_TRUE(cmp.valid) << cmp.error;
+    EXPECT_LT(cmp.wrongPct, 0.01) << cmp.wrongPixels << " wrong pixels";
 }
 
 // A fragment stage that calls a function no shader defines: it compiles, and fails to link.
