@@ -97,11 +97,7 @@ void CasterEdges::setOpenCasterRule(OpenCasterRule rule)
 
 bool CasterEdges::update(const std::vector<Caster>& casters, const osg::Vec4d& light)
 {
-    if (_extracted && light == _light && casters == _casters)
-    {
-        ++_skipped;
-        return false;
-    }
+    if (_extracted && light == _light && casters == _casters) return false;
     _casters = casters;
     _light = light;
     _extracted = true;

@@ -236,7 +236,6 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
                              const osg::BoundingBoxd& receivers, BlockerQueries* blockers)
 {
     _zfail = _zpass = _culled = 0;
-    _scissorCoverage = 0.0;
     const osg::Viewport* viewport = cv.getViewport();
     const osg::Matrixd worldToClip = *cv.getModelViewMatrix() * *cv.getProjectionMatrix();
     const bool conditional = blockers && blockers->size() == _entries.size();
@@ -279,14 +278,12 @@ bool ShadowVolumeGroup::applyScissor(Entry& e, const osg::BoundingBoxd& receiver
     if (!viewport || !receivers.valid() || !volumeScissor(world, _light, receivers, worldToClip, *viewport, rect))
     {
         e.transform->setStateSet(nullptr);
-        if (viewport) _scissorCoverage += 1.0;
         return true;
     }
     if (rect.z() <= 0 || rect.w() <= 0) return false;
     if (!e.scissor) e.scissor = new osg::Scissor;
     e.scissor->setScissor(rect.x(), rect.y(), rect.z(), rect.w());
     e.transform->getOrCreateStateSet()->setAttributeAndModes(e.scissor.get(), osg::StateAttribute::ON);
-    _scissorCoverage += double(rect.z()) * rect.w() / (viewport->width() * viewport->height());
     return true;
 }
 
@@ -523,12 +520,17 @@ void StencilShadowPasses::build(Slot& s) const
     s.volumeBegin = s.volumeCounter->createBeginNode(bin + BIN_VOLUME_BEGIN);
     s.volumeEnd = s.volumeCounter->createEndNode(bin + BIN_VOLUME_END);
 
-    s.litState = passState(bin + BIN_LIT, _lighting.get());
-    s.litState->setDefine("OSS_LIGHT_PASS", slot);
-    s.litState->setDefine("OSS_LIGHT_NUM", light);
+    // A light pass: the receivers where the stencil holds ref under readMask.
+    const auto lightPass = [&](int binOffset, unsigned int ref, unsigned int readMask) {
+        osg::ref_ptr<osg::StateSet> ss = passState(bin + binOffset, _lighting.get());
+        ss->setDefine("OSS_LIGHT_PASS", slot);
+        ss->setDefine("OSS_LIGHT_NUM", light);
+        addLightState(*ss, ref, readMask, !s.mask);
+        if (s.mark) addMarkState(*ss);
+        return ss;
+    };
     // Count 0 is lit; HYBRID: only at silhouette pixels (mask bit set, count 0).
-    addLightState(*s.litState, s.hybrid ? MASK_BIT : 0u, s.hybrid ? 0xffu : 0xffu, !s.mask);
-    if (s.mark) addMarkState(*s.litState);
+    s.litState = lightPass(BIN_LIT, s.hybrid ? MASK_BIT : 0u, 0xffu);
     if (!s.hybrid) return;
 
     s.maskCounter = new GpuCounter(GL_SAMPLES_PASSED);
@@ -538,12 +540,9 @@ void StencilShadowPasses::build(Slot& s) const
     s.maskState->setDefine("OSS_HYBRID_MASK", slot);
     s.maskState->setDefine("OSS_LIGHT_NUM", light);
     addMaskState(*s.maskState);
-    s.litShadowMapState = passState(bin + BIN_LIT_SHADOW_MAP, _lighting.get());
-    s.litShadowMapState->setDefine("OSS_LIGHT_PASS", slot);
-    s.litShadowMapState->setDefine("OSS_LIGHT_NUM", light);
+    // The other pixels (mask bit clear): the shadow map's answer.
+    s.litShadowMapState = lightPass(BIN_LIT_SHADOW_MAP, 0u, MASK_BIT);
     s.litShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
-    addLightState(*s.litShadowMapState, 0u, MASK_BIT, !s.mask);
-    if (s.mark) addMarkState(*s.litShadowMapState);
 }
 
 void StencilShadowPasses::setScreenVisibility(osg::Node* barrier, osg::StateSet* finalPass)
