@@ -30,6 +30,10 @@ std::string shaderPrelude()
     };
     for (const auto& d : defaults)
         s << "#ifndef " << d.first << "\n#define " << d.first << " " << d.second << "\n#endif\n";
+    // The shadow maps' sampler: raw depths in SILHOUETTE_MAP, which makes its own comparisons
+    // (defined where a shader imports OSS_SILHOUETTE_MAP).
+    s << "#ifdef OSS_SILHOUETTE_MAP\n#define OSS_SHADOW_SAMPLER sampler2D\n#else\n"
+         "#define OSS_SHADOW_SAMPLER sampler2DShadow\n#endif\n";
     return s.str();
 }
 

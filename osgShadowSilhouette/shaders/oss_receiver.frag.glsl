@@ -25,12 +25,7 @@ uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform int oss_maskLight;
 uniform sampler2D oss_baseTexture;
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
-#ifdef OSS_SILHOUETTE_MAP
-#define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
-#else
-#define OSS_SHADOW_SAMPLER sampler2DShadow
-#endif
-uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS]; // prelude: raw depths in SILHOUETTE_MAP
 
 float oss_shadowTerm(int light, vec4 eyePosition);
 float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);

@@ -16,12 +16,7 @@ uniform int oss_numLights;                          // lights lit by the receive
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
 uniform int oss_shadowSlot[OSS_MAX_SCENE_LIGHTS];   // their shadow slot, -1 unshadowed
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];// eye space -> light texture space [0,1]^3
-#ifdef OSS_SILHOUETTE_MAP
-#define OSS_SHADOW_SAMPLER sampler2D // raw depths: the silhouette mode makes its own comparisons
-#else
-#define OSS_SHADOW_SAMPLER sampler2DShadow
-#endif
-uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS];
+uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS]; // prelude: raw depths in SILHOUETTE_MAP
 #ifdef OSS_SILHOUETTE_MAP
 // Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
 uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)

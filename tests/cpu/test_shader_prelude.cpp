@@ -45,9 +45,10 @@ std::vector<std::string> lines(const std::string& text)
 TEST(ShaderPrelude, NoShaderFileRepeatsAConstant)
 {
     int files = 0;
-    // The constants, and the defaults of the defines the technique sets per view.
+    // The constants, the defaults of the defines the technique sets per view, and the shadow
+    // maps' sampler type.
     const std::regex defines(
-        R"(#define\s+(OSS_MAX_SCENE_LIGHTS|OSS_MAX_SHADOW_LIGHTS|OSS_MAX_SHADOW_SLOTS|OSS_NUM_SHADOW_SLOTS|OSS_SKIPPED_SLOTS|OSS_MAX_LIST_SLOTS)\b)");
+        R"(#define\s+(OSS_MAX_SCENE_LIGHTS|OSS_MAX_SHADOW_LIGHTS|OSS_MAX_SHADOW_SLOTS|OSS_NUM_SHADOW_SLOTS|OSS_SKIPPED_SLOTS|OSS_MAX_LIST_SLOTS|OSS_SHADOW_SAMPLER)\b)");
     const std::regex sizedByNumber(R"(oss_lightIndex\s*\[\s*\d+\s*\])");
     const std::regex clampedByNumber(R"(clamp\s*\(\s*oss_maskLight\s*,\s*0\s*,\s*\d+\s*\))");
     for (const fs::directory_entry& entry : fs::directory_iterator(shaderDir()))
