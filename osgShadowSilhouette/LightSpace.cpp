@@ -197,9 +197,8 @@ std::array<osg::Vec3d, 8> frustumCorners(const osg::Matrixd& view, const osg::Ma
  *  than its distance (a ground seen straight down from a point light: every point at about
  *  one depth) makes the projection's depth terms, (f + n) / (f - n), large against float
  *  precision: the eye pass's depth of a receiver then misses the map's own by more than the
- *  polygon offset, and the ground shadows itself in bands (measured: 4.6% wrong pixels under
- *  a point light 3 units above a casting ground, near 2.97 and far 3.03). A factor of two
- *  costs the map no precision worth having. */
+ *  polygon offset, and the ground shadows itself in bands (docs/robustness.md). A factor of
+ *  two costs the map no precision worth having. */
 double widerNear(double zNear, double zFar)
 {
     return std::min(zNear, 0.5 * zFar);

@@ -29,8 +29,7 @@ layout(std430, binding = 1) readonly buffer OssListRead { uvec4 data4[]; } oss_l
 // the walk's prologue (the header and the texel's head and count) reads the same buffer as a
 // storage block, the walk itself as an image. A SIMD rasterizer (llvmpipe) executes the
 // prologue in every block of pixels, walking or not; a storage-block load skips the lanes
-// that do not walk, an image load does not: 8% off HYBRID's frame on the elephant with one
-// and with five point lights (docs/shadow-volumes.md).
+// that do not walk, an image load does not (measured in docs/shadow-volumes.md).
 #if defined(OSS_LIST_IMAGES) && defined(OSS_LIST_BLOCK_HEADS)
 layout(std430, binding = 1) readonly buffer OssListHeads { uint data[]; } oss_listHeads[OSS_MAX_LIST_SLOTS];
 #define OSS_HEAD_LOAD(k, i) oss_listHeads[k].data[i]
