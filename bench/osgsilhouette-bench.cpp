@@ -3,12 +3,17 @@
  *
  *   osgsilhouette-bench [--scenes default,cubes,...] [--techniques shadowmap,osgShadow:ShadowMap,...]
  *       [--sizes 256,512,1024,2048,4096] [--technique-sizes TECHNIQUE=a,b,...] [--size W H]
- *       [--frames N] [--warmup N] [--per-pixel-lighting on|off]
+ *       [--frames N] [--warmup N] [--per-pixel-lighting on|off] [--user-program on|off]
  *       [--out-dir DIR] [--no-plot] [--list]
  *
  * Our modes light per vertex unless --per-pixel-lighting on (the property PerPixelLighting,
  * on by default in the technique): osgShadow's techniques light per vertex, and per-pixel
  * lighting is fragment work that is not shadow work.
+ *
+ * --user-program on draws the receivers with an application program given to
+ * addShadowShaders() (per-pixel diffuse of every scene light times oss_shadowTerm()), as the
+ * README's "Your own shaders" does: in the stencil modes this adds the screen-space
+ * visibility image and its final pass. The score is the technique's mask either way.
  *
  * For each scene it builds the exact Embree reference once (one BVH, one mask per view), then
  * for each technique and map size renders offscreen, times the frames, reads the technique's
@@ -22,6 +27,8 @@
 #include "RenderOptions.h"
 #include "Setup.h"
 
+#include <osg/LightSource>
+#include <osg/Program>
 #include <osg/Timer>
 
 #include <algorithm>
@@ -54,6 +61,7 @@ struct Options
     std::string outDir = "bench-out";
     bool plot = true;
     bool perPixelLighting = false; ///< --per-pixel-lighting on|off: our modes' PerPixelLighting
+    bool userProgram = false;      ///< --user-program on|off: receivers drawn by an application program
 };
 
 struct Row
@@ -118,7 +126,8 @@ void usage(const char* program)
     std::cout << "usage: " << program
               << " [--scenes a,b] [--techniques x,y] [--sizes 256,512,...]\n"
                  "       [--technique-sizes TECHNIQUE=a,b,... (repeatable)] [--size W H] [--frames N]\n"
-                 "       [--warmup N] [--per-pixel-lighting on|off] [--out-dir DIR] [--no-plot] [--list]\n"
+                 "       [--warmup N] [--per-pixel-lighting on|off] [--user-program on|off]\n"
+                 "       [--out-dir DIR] [--no-plot] [--list]\n"
                  "Scenes: ";
     for (const std::string& s : osshar::sceneNames()) std::cout << s << " ";
     std::cout << "\nTechniques: ";
@@ -152,6 +161,12 @@ bool parseOptions(osg::ArgumentParser& a, Options& o, std::string& error)
     {
         if (lighting != "on" && lighting != "off") return error = "--per-pixel-lighting takes on or off", false;
         o.perPixelLighting = lighting == "on";
+    }
+    std::string userProgram;
+    if (a.read("--user-program", userProgram))
+    {
+        if (userProgram != "on" && userProgram != "off") return error = "--user-program takes on or off", false;
+        o.userProgram = userProgram == "on";
     }
     if (o.techniques.empty()) o.techniques = availableTechniques();
     if (o.width < 1 || o.height < 1 || o.frames < 1 || o.warmup < 0 || o.scenes.empty() || o.sizes.empty())
@@ -210,6 +225,52 @@ ossref::Mask ourMask(osshar::Renderer& renderer, SilhouetteShadowTechnique& tech
     return image ? ossref::maskFromImage(*image) : ossref::Mask{};
 }
 
+/** An application's receiver program, as the README's "Your own shaders" writes one: per-pixel
+ *  diffuse of each of the scene's GL lights, times its shadow term. */
+osg::ref_ptr<osg::Program> userProgram(const osshar::PreparedScene& scene)
+{
+    std::ostringstream fragment;
+    fragment << "#version 400 compatibility\n"
+                "in vec4 benchEyePosition;\n"
+                "in vec3 benchNormal;\n"
+                "float oss_shadowTerm(int light, vec4 eyePosition);\n"
+                "void main()\n"
+                "{\n"
+                "    vec3 p = benchEyePosition.xyz;\n"
+                "    vec3 n = normalize(benchNormal);\n"
+                "    if (dot(n, -p) < 0.0) n = -n;\n"
+                "    vec3 colour = 0.2 * gl_Color.rgb;\n";
+    for (const osshar::LightInScene& light : scene.lights)
+    {
+        const int num = light.source->getLight()->getLightNum();
+        fragment << "    {\n"
+                    "        vec4 lp = gl_LightSource["
+                 << num
+                 << "].position;\n"
+                    "        vec3 l = normalize(lp.w == 0.0 ? lp.xyz : lp.xyz / lp.w - p);\n"
+                    "        colour += max(dot(n, l), 0.0) * oss_shadowTerm("
+                 << num << ", benchEyePosition) * gl_Color.rgb;\n"
+                           "    }\n";
+    }
+    fragment << "    gl_FragColor = vec4(colour, gl_Color.a);\n"
+                "}\n";
+    const char* const vertex = "#version 400 compatibility\n"
+                               "out vec4 benchEyePosition;\n"
+                               "out vec3 benchNormal;\n"
+                               "void main()\n"
+                               "{\n"
+                               "    benchEyePosition = gl_ModelViewMatrix * gl_Vertex;\n"
+                               "    benchNormal = gl_NormalMatrix * gl_Normal;\n"
+                               "    gl_FrontColor = gl_Color;\n"
+                               "    gl_Position = ftransform();\n"
+                               "}\n";
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName("osgsilhouette-bench receivers");
+    program->addShader(new osg::Shader(osg::Shader::VERTEX, vertex));
+    program->addShader(new osg::Shader(osg::Shader::FRAGMENT, fragment.str()));
+    return program;
+}
+
 std::string fmt(double v, int decimals);
 
 /** Renders, times and scores one technique at one map size. */
@@ -224,6 +285,12 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
     if (!osshar::prepareScene(ro, scene, error) || !osshar::makeShadowedRoot(technique, mapSize, scene, root, ours, error))
         return false;
     if (ours) ours->setPerPixelLighting(o.perPixelLighting);
+    osg::ref_ptr<osg::Program> program = ours && o.userProgram ? userProgram(scene) : nullptr;
+    if (program)
+    {
+        ours->addShadowShaders(program.get());
+        scene.content->getOrCreateStateSet()->setAttributeAndModes(program.get());
+    }
     renderer.setSceneData(root.get());
     renderer.setView(scene.view);
     const osshar::FrameTiming timing = renderer.timeFrames(o.warmup, o.frames);
@@ -235,9 +302,13 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
         const SilhouetteShadowTechnique::Statistics stats = ours->getStatistics();
         if (stats.volumeOverdraw() >= 0.0)
             row.notes = "volume overdraw " + fmt(stats.volumeOverdraw(), 2) + " fragments/px";
+        if (stats.screenVisibility)
+            row.notes += std::string(row.notes.empty() ? "" : "; ") + "application program through screen visibility";
         if (stats.blockersTested > 0)
             row.notes += "; volumes of " + std::to_string(stats.blockersSkipped) + "/" +
                          std::to_string(stats.blockersTested) + " casters skipped (hidden from the light)";
+        // The mask view is the receiver program's: an application program would draw over it.
+        if (program) scene.content->getOrCreateStateSet()->removeAttribute(program.get());
         mask = ourMask(renderer, *ours);
         const SilhouetteShadowTechnique::Mode mode = ours->getEffectiveMode();
         if (mode == SilhouetteShadowTechnique::SILHOUETTE_MAP || mode == SilhouetteShadowTechnique::HYBRID)
@@ -423,6 +494,9 @@ void writeMarkdown(const std::string& path, const std::vector<Row>& rows, const 
     md << "# Frame time against error\n\n"
        << o.width << "x" << o.height << ", median of " << o.frames << " frames after " << o.warmup
        << " warm-up frames; wrong_pct against the exact Embree reference (MEASURE.md).\n\n"
+       << (o.userProgram ? "Our modes draw the receivers with an application program given to addShadowShaders() "
+                           "(--user-program on).\n\n"
+                         : "")
        << "## Best point of each technique\n\n"
           "Lowest wrong_pct over the map sizes (within 10% of it plus 0.002 points, for noise) and the fastest "
           "frame time among the sizes that reach it, with that map size (volume uses no map).\n\n";

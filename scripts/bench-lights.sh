@@ -15,11 +15,7 @@
 #                                         # cell's fastest round (other jobs only ever add time)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-BUILD_DIR=${BUILD_DIR:-build-bench}
-OUT=${OUT:-docs/bench}
-FRAMES=20
-ROUNDS=${ROUNDS:-3}
-[ -n "${QUICK:-}" ] && FRAMES=5 && ROUNDS=1
+source scripts/bench-rounds.sh
 # SHADOW_MAP at 4 times HYBRID's map size, and at HYBRID's own.
 MODES=${MODES:-"shadowmap:2048 shadowmap:512 silhouette:1024 hybrid:512 volume:0"}
 # Five point lights above the scene, around the elephant.
