@@ -67,7 +67,7 @@ ScreenVisibility::~ScreenVisibility() = default;
 bool ScreenVisibility::supported(unsigned int contextID)
 {
     const osg::GLExtensions* ext = osg::GLExtensions::Get(contextID, false);
-    return ext && ext->isBindImageTextureSupported() && ext->glMemoryBarrier;
+    return ext && ext->glVersion >= 4.3f && ext->isBindImageTextureSupported() && ext->glMemoryBarrier; // GLSL 4.30
 }
 
 void ScreenVisibility::fit(const osg::Viewport& viewport)

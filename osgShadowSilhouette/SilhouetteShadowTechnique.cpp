@@ -767,6 +767,12 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                                                       osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
+    // The GLSL 4.30 shaders join the receivers' programs only where the context runs them.
+    const osg::GLExtensions* ext = cv.getState() ? osg::GLExtensions::Get(cv.getState()->getContextID(), false) : nullptr;
+    if (ext && ext->glVersion >= 4.3f)
+        vd.receiverStateSet->setDefine(shader::DEFINE_GLSL_430);
+    else
+        vd.receiverStateSet->removeDefine(shader::DEFINE_GLSL_430);
     stats.screenVisibility = cullScreenVisibility(cv, vd, stencilMode);
     std::size_t casterTriangles = 0;
     for (const Caster& caster : frame.casterList) casterTriangles += caster.mesh->getAdjacency().report.inputTriangles;
@@ -1261,7 +1267,7 @@ bool SilhouetteShadowTechnique::cullScreenVisibility(osgUtil::CullVisitor& cv, V
     {
         warnOnce(WARN_SCREEN_VISIBILITY,
                  std::string("Mode ") + modeName(_mode) +
-                     ": the graphics context has no image load/store (OpenGL 4.2), which the stencil modes need to "
+                     ": the graphics context runs no OpenGL 4.3 (GLSL 4.30, image load/store), which the stencil modes need to "
                      "draw the receivers with the programs given to addShadowShaders(); those receivers show the "
                      "technique's shading instead");
         use = false;

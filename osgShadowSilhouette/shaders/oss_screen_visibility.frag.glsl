@@ -13,7 +13,8 @@
 //   OSS_SCREEN_VISIBILITY  final pass: oss_screenVisibilityTerm(slot) reads the bit
 // Linked into every program of getShadowShaders(); empty unless one of them is defined.
 
-#pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK)
+#pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK, OSS_GLSL_430)
+#pragma requires(OSS_GLSL_430)
 #if defined(OSS_SCREEN_VISIBILITY) || defined(OSS_VISIBILITY_CLEAR) || defined(OSS_VISIBILITY_MARK)
 layout(r32ui, binding = OSS_SCREEN_VISIBILITY_UNIT) coherent uniform uimage2D oss_screenVisibility;
 #else

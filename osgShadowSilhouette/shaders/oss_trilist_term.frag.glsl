@@ -8,7 +8,10 @@
 // texture-space x, y and lies nearer to the light. Other pixels keep the shadow map's answer.
 // Linked into the receiver program; empty unless OSS_TRIANGLE_LISTS is defined.
 
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT, OSS_GLSL_430)
+// Left out of the programs of a context older than GL 4.3 (no comment on a pragma line: OSG
+// reads every word there as a define).
+#pragma requires(OSS_GLSL_430)
 #ifdef OSS_TRIANGLE_LISTS
 // Slots 0 .. OSS_MAX_LIST_SLOTS-1 have lists (at most 12, one storage block each: the
 // technique sets it to the slots in use); the others answer with their PCF.
