@@ -7,9 +7,14 @@
 #include "Setup.h"
 #include "reference/Reference.h"
 
+#include <osg/GLExtensions>
+#include <osg/GraphicsContext>
 #include <osgShadow/ShadowedScene>
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
 
 namespace osstest {
 
@@ -90,6 +95,35 @@ struct ShadowedRender
                                             osshar::referenceLight(scene.lights.at(index)), ~0u, ~0u, offsetScale);
     }
 };
+
+/** One integer limit of r's context (0 where the query fails): what the context offers is
+ *  asked of it, not assumed from this machine's. */
+inline GLint contextLimit(ShadowedRender& r, GLenum name)
+{
+    osg::GraphicsContext* gc = r.renderer->viewer().getCamera()->getGraphicsContext();
+    GLint value = 0;
+    gc->makeCurrent();
+    glGetIntegerv(name, &value);
+    if (glGetError() != GL_NO_ERROR) value = 0;
+    gc->releaseContext();
+    return value;
+}
+
+/** The OpenGL version of r's context as OSG reads it (0 before the context has drawn). */
+inline float contextGLVersion(ShadowedRender& r)
+{
+    const osg::State* state = r.renderer->viewer().getCamera()->getGraphicsContext()->getState();
+    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
+    return ext ? ext->glVersion : 0.0f;
+}
+
+/** A GL version for a message: "4.1", not the float's 4.0999999. */
+inline std::string glVersionText(float version)
+{
+    char text[16];
+    std::snprintf(text, sizeof(text), "%.1f", double(version));
+    return text;
+}
 
 } // namespace osstest
 

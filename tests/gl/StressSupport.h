@@ -6,6 +6,7 @@
 
 #include "GLTestSupport.h"
 #include "Meshes.h"
+#include "ModeBounds.h"
 #include "NotifyCapture.h"
 
 #include <osg/Geode>
@@ -28,19 +29,6 @@ const char* const STRESS_MODES[] = {"shadowmap", "silhouette", "hybrid", "volume
  *  suite fast; wrong_pct is a share of pixels and hardly depends on it. */
 constexpr int STRESS_WIDTH = 640;
 constexpr int STRESS_HEIGHT = 480;
-
-/** A bound on wrong_pct per mode. */
-struct ModeBounds
-{
-    double shadowMap, silhouette, hybrid, volume;
-    double of(const std::string& mode) const
-    {
-        if (mode == "shadowmap") return shadowMap;
-        if (mode == "silhouette") return silhouette;
-        if (mode == "hybrid") return hybrid;
-        return volume;
-    }
-};
 
 /** Per-mode stress cases: the parameter is a mode name. */
 class StressMode : public ::testing::TestWithParam<const char*>

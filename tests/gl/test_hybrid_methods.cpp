@@ -16,6 +16,7 @@
 #include <cstring>
 #include <iostream>
 
+using osstest::glVersionText;
 using osstest::ShadowedRender;
 using osstest::SilhouetteShadowTechnique;
 
@@ -122,7 +123,14 @@ TEST(HybridMethods, AutoUsesTriangleListsWhereTheContextHasThem)
     ASSERT_TRUE(r.valid());
     ASSERT_EQ(r.technique->getHybridMethod(), SilhouetteShadowTechnique::HYBRID_AUTO);
     r.renderer->timeFrames(0, 1);
-    EXPECT_TRUE(r.technique->getStatistics().triangleLists) << "this machine's GL is 4.5";
+    const float version = contextGLVersion(r);
+    ASSERT_GT(version, 0.0f);
+    if (version < 4.3f)
+    {
+        EXPECT_FALSE(r.technique->getStatistics().triangleLists) << "OpenGL " << glVersionText(version) << " has no storage buffers";
+        GTEST_SKIP() << "the context runs OpenGL " << glVersionText(version) << ": HYBRID_AUTO resolves with stencil volumes";
+    }
+    EXPECT_TRUE(r.technique->getStatistics().triangleLists) << "the context runs OpenGL " << glVersionText(version);
     EXPECT_EQ(r.technique->getStatistics().zfailCasters + r.technique->getStatistics().zpassCasters, 0u)
         << "no shadow volumes with triangle lists";
 }
@@ -164,22 +172,6 @@ TEST(HybridMethods, ListsAndVolumesAgreeOnManyOverlappingShadows)
     EXPECT_LT(masked.wrongPct, 0.01);
     EXPECT_LT(masked.wrongPixels, ossref::compareMasks(maskedVolumes, reference).wrongPixels);
 }
-
-namespace {
-
-/** One integer limit of the renderer's context (0 where the query fails). */
-GLint contextLimit(ShadowedRender& r, GLenum name)
-{
-    osg::GraphicsContext* gc = r.renderer->viewer().getCamera()->getGraphicsContext();
-    GLint value = 0;
-    gc->makeCurrent();
-    glGetIntegerv(name, &value);
-    if (glGetError() != GL_NO_ERROR) value = 0;
-    gc->releaseContext();
-    return value;
-}
-
-} // namespace
 
 // The eye pass reads the lists as images where the context has the image uniforms, as
 // storage blocks otherwise, and each walk's prologue from the storage blocks where the

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iostream>
 
+using osstest::glVersionText;
 using osstest::ShadowedRender;
 using osstest::SilhouetteShadowTechnique;
 
@@ -440,7 +441,9 @@ TEST(HybridTriangleLists, EveryCubeFaceHasLists)
     r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
     r.renderer->timeFrames(0, 3);
     const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
-    EXPECT_TRUE(s.triangleLists) << "this machine's GL is 4.5";
+    const float version = contextGLVersion(r);
+    if (version < 4.3f) GTEST_SKIP() << "the context runs OpenGL " << glVersionText(version) << ": no triangle lists";
+    EXPECT_TRUE(s.triangleLists) << "the context runs OpenGL " << glVersionText(version);
     EXPECT_GT(s.shadowPasses, 6u) << "more slots than the 6 that texture units allowed the lists before";
     EXPECT_EQ(s.zfailCasters + s.zpassCasters, 0u) << "no shadow volumes drawn";
     EXPECT_EQ(occurrences(warnings, "triangle lists hold"), 0);

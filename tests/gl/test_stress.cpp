@@ -2,6 +2,7 @@
 // the same accuracy bounds as the plain cases.
 #include "GLTestSupport.h"
 #include "Meshes.h"
+#include "ModeBounds.h"
 
 #include <osg/Geode>
 #include <osg/MatrixTransform>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+namespace bounds = osstest::bounds;
 using osstest::ShadowedRender;
 using osstest::SilhouetteShadowTechnique;
 
@@ -43,7 +45,7 @@ TEST_P(EveryMode, NonFiniteVerticesAreLeftOut)
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(bad.get());
     r.scene.content->addChild(geode.get());
-    EXPECT_LT(wrongPct(r), 0.15) << GetParam();
+    EXPECT_LT(wrongPct(r), bounds::CLAIMED.of(GetParam())) << GetParam();
 }
 
 TEST_P(EveryMode, SceneFarFromTheOrigin)
@@ -60,7 +62,7 @@ TEST_P(EveryMode, SceneFarFromTheOrigin)
     r.scene.view.center += offset;
     r.renderer->setView(r.scene.view);
     // Vertices are floats 3e5 from the origin (0.03 units apart): edges move by up to that.
-    EXPECT_LT(wrongPct(r), 1.0) << GetParam();
+    EXPECT_LT(wrongPct(r), bounds::CLAIMED.of(GetParam())) << GetParam();
 }
 
 TEST_P(EveryMode, MapSizeOneRendersWithoutError)
@@ -84,11 +86,10 @@ TEST(Stress, SwitchingModeEveryFrame)
     }
     // Each mode keeps its accuracy right after another one ran (shared depth maps change
     // their comparison mode between SILHOUETTE_MAP and the others).
-    const double bounds[] = {0.15, 0.05, 0.01, 0.01}; // SHADOW_MAP, SILHOUETTE_MAP, HYBRID, SHADOW_VOLUME
     for (int m : {1, 2, 0, 3, 1, 0})
     {
         r.technique->setMode(SilhouetteShadowTechnique::Mode(m));
-        EXPECT_LT(wrongPct(r), bounds[m]) << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m));
+        EXPECT_LT(wrongPct(r), bounds::CLAIMED.ofMode(m)) << SilhouetteShadowTechnique::modeName(SilhouetteShadowTechnique::Mode(m));
     }
 }
 
@@ -151,5 +152,5 @@ TEST(Stress, StencilModesWithoutStencilBufferFallBackToShadowMap)
         ossref::maskFromImage(*image),
         ossref::computeReferenceMask(*scene.content, osshar::referenceCamera(scene.view, 1024, 768),
                                      osshar::referenceLight(scene.lights.at(0))));
-    EXPECT_LT(c.wrongPct, 0.15);
+    EXPECT_LT(c.wrongPct, bounds::CLAIMED.shadowMap);
 }

@@ -13,9 +13,6 @@ using namespace osstest;
 
 namespace {
 
-/** The default scene's bounds at 1024 texels (test_shadow_map.cpp, test_shadow_volume.cpp). */
-const ModeBounds DEFAULT_1024{0.15, 0.05, 0.01, 0.01};
-
 class NoSwap : public osg::GraphicsContext::SwapCallback
 {
 public:
@@ -108,7 +105,7 @@ void expectTwoViewsAccurate(const char* mode, osgViewer::ViewerBase::ThreadingMo
     two.viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded); // waits for the draw threads
     two.technique->setDebugView(SilhouetteShadowTechnique::DEBUG_SHADOW_MASK);
     two.viewer->frame();
-    for (int i = 0; i < 2; ++i) EXPECT_LT(two.wrongPct(i), DEFAULT_1024.of(mode)) << mode << ", view " << i;
+    for (int i = 0; i < 2; ++i) EXPECT_LT(two.wrongPct(i), bounds::CLAIMED.of(mode)) << mode << ", view " << i;
 }
 
 } // namespace
@@ -149,7 +146,7 @@ TEST(StressConfig, CullAndDrawThreadsWhileSwitchingModes)
         r.technique->setMode(m);
         mask = r.mask();
         reference = stressReference(r, 0, ~0u);
-        expectMaskWithinBound(r, mask, reference, DEFAULT_1024.of(mode));
+        expectMaskWithinBound(r, mask, reference, bounds::CLAIMED.of(mode));
         EXPECT_EQ(r.technique->getStatistics().effectiveMode, m);
     }
     expectFiniteImage(r, mask, reference); // the last mode's
@@ -164,15 +161,15 @@ TEST_P(StressMode, WindowResize)
 {
     ShadowedRender r("default", GetParam(), 1024, 900, 600);
     ASSERT_TRUE(r.valid());
-    expectWithinBound(r, DEFAULT_1024.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
     for (const auto& size : {std::make_pair(700, 600), std::make_pair(420, 600), std::make_pair(900, 600)})
     {
         r.renderer->resize(size.first, size.second);
         r.renderer->setView(r.scene.view);
-        expectFloatMaskWithinBound(r, DEFAULT_1024.of(GetParam()));
+        expectFloatMaskWithinBound(r, bounds::CLAIMED.of(GetParam()));
         EXPECT_EQ(r.mask().width, size.first);
     }
-    expectWithinBound(r, DEFAULT_1024.of(GetParam())); // back at 900: the window read-back agrees again
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam())); // back at 900: the window read-back agrees again
 }
 
 // The context is destroyed and a new one renders the same scene graph: releaseGLObjects()
@@ -184,7 +181,7 @@ TEST_P(StressMode, ContextDestroyedAndRecreated)
     ASSERT_TRUE(r.valid());
     for (int round = 0; round < 3; ++round)
     {
-        expectWithinBound(r, DEFAULT_1024.of(GetParam()));
+        expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
         osg::GraphicsContext* gc = r.renderer->viewer().getCamera()->getGraphicsContext();
         osg::State* state = gc->getState();
         const unsigned int contextID = state->getContextID();
@@ -203,7 +200,7 @@ TEST_P(StressMode, ContextDestroyedAndRecreated)
         r.renderer->setSceneData(r.root.get());
         r.renderer->setView(r.scene.view);
     }
-    expectWithinBound(r, DEFAULT_1024.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
 }
 
 // A map size beyond the context's GL_MAX_TEXTURE_SIZE (lowered here to 1024, as a small
@@ -218,7 +215,7 @@ TEST_P(StressMode, MapSizeAboveTheGLLimitIsClampedWithAWarning)
     osg::GLExtensions* ext = osg::GLExtensions::Get(gc->getState()->getContextID(), false);
     ASSERT_TRUE(ext);
     ext->maxTextureSize = 1024;
-    expectWithinBound(r, DEFAULT_1024.of(GetParam()) * 2.0);
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
     EXPECT_TRUE(notes.warned("GL_MAX_TEXTURE_SIZE")) << notes.warnings();
     EXPECT_EQ(r.technique->getShadowMapSize(), 1024u);
 }

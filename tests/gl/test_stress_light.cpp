@@ -11,8 +11,6 @@ using namespace osstest;
 
 namespace {
 
-const ModeBounds TYPICAL{0.3, 0.15, 0.03, 0.03};
-
 /** A direction toward the light at the default scene's azimuth, elevationDeg above the ground. */
 osg::Vec4 elevatedLight(double elevationDeg)
 {
@@ -57,7 +55,7 @@ TEST_P(ModeAndElevation, GrazingLight)
     ShadowedRender r("grazing", mode, 2048, STRESS_WIDTH, STRESS_HEIGHT);
     ASSERT_TRUE(r.valid());
     lightOf(r)->setPosition(elevatedLight(std::get<1>(GetParam())));
-    expectWithinBound(r, ModeBounds{0.15, 0.03, 0.03, 0.03}.of(mode));
+    expectWithinBound(r, bounds::CLAIMED.of(mode));
 }
 
 INSTANTIATE_TEST_SUITE_P(Grazing, ModeAndElevation,
@@ -71,7 +69,7 @@ TEST_P(StressMode, LightAlongZAxis)
     ShadowedRender r = stressRender(GetParam());
     ASSERT_TRUE(r.valid());
     lightOf(r)->setPosition(osg::Vec4(0, 0, 1, 0));
-    expectWithinBound(r, TYPICAL.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
 }
 
 // Light along +x: exactly in the plane of the ground and of every horizontal face (N.L = 0:
@@ -83,7 +81,7 @@ void lightAlongXAxis(const char* mode, bool triangleLists = false)
     r.technique->setHybridMethod(triangleLists ? osgShadowSilhouette::SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS
                                                : osgShadowSilhouette::SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
     lightOf(r)->setPosition(osg::Vec4(1, 0, 0, 0));
-    expectWithinBound(r, TYPICAL.of(mode));
+    expectWithinBound(r, bounds::CLAIMED.of(mode));
 }
 
 TEST_P(StencilMode, LightAlongXAxisInTheGroundPlane)
@@ -112,7 +110,7 @@ TEST_P(StressMode, PointLightInAFacePlane)
     ShadowedRender r = stressRender(GetParam());
     ASSERT_TRUE(r.valid());
     makePositional(r, osg::Vec3(1.5f, -6.0f, 7.0f));
-    expectWithinBound(r, ModeBounds{0.45, 0.05, 0.02, 0.02}.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
 }
 
 // A point light 0.01 above the sphere's pole: its shadow covers most of the ground, and
@@ -122,7 +120,7 @@ void pointLightVeryCloseToACaster(const char* mode)
     ShadowedRender r = stressRender(mode);
     ASSERT_TRUE(r.valid());
     makePositional(r, osg::Vec3(2.5f, 2.5f, 3.51f));
-    expectWithinBound(r, TYPICAL.of(mode));
+    expectWithinBound(r, bounds::CLAIMED.of(mode));
 }
 
 TEST(StressLight, PointLightVeryCloseToACasterVolume)
@@ -145,7 +143,7 @@ TEST_P(StressMode, PointLightInsideACastersBounds)
     ASSERT_TRUE(r.valid());
     addToScene(r, osshar::makeTorus(osg::Vec3(-1.5f, -5.0f, 3.0f), 1.5f, 0.4f, 48, 16).get());
     makePositional(r, osg::Vec3(-1.5f, -5.0f, 3.0f));
-    expectWithinBound(r, ModeBounds{0.6, 0.05, 0.02, 0.02}.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
 }
 
 // A spot light with a 1 degree cone: a small lit disc, with a caster's shadow inside it.
@@ -155,7 +153,7 @@ TEST_P(StressMode, SpotLightWithATinyCone)
     ASSERT_TRUE(r.valid());
     addToScene(r, flatTriangles(boxTriangles({-2.05f, -5.05f, 3}, {-1.95f, -4.95f, 3.1f}), "small box").get());
     makePositional(r, osg::Vec3(-2, -5, 12), osg::Vec3(0, 0, -1), 1.0f);
-    expectWithinBound(r, TYPICAL.of(GetParam()));
+    expectWithinBound(r, bounds::CLAIMED.of(GetParam()));
 }
 
 // A spot light with an 89 degree cone low over the scene: nearly a hemisphere.
@@ -164,9 +162,7 @@ TEST_P(StressMode, SpotLightWithAVeryWideCone)
     ShadowedRender r = stressRender(GetParam());
     ASSERT_TRUE(r.valid());
     makePositional(r, osg::Vec3(1, 0, 6), osg::Vec3(0, 0, -1), 89.0f);
-    // A 178 degree frustum spreads the map's texels thin at its rim (measured 0.36, 0.21,
-    // 0.19 and 0.002%).
-    expectWithinBound(r, ModeBounds{0.75, 0.45, 0.4, 0.02}.of(GetParam()));
+    expectWithinBound(r, bounds::WIDE_SPOT.of(GetParam()));
 }
 
 namespace {
@@ -243,7 +239,7 @@ void badLight(const char* mode, BadValue bad, const std::string& named)
     r.renderer->timeFrames(0, 2);
     osg::ref_ptr<osg::Image> without = r.renderer->renderAndCapture();
     expectLampLeftOut(r, nanLamp(bad, 1).get(), *without, named);
-    expectWithinBound(r, TYPICAL.of(mode));
+    expectWithinBound(r, bounds::CLAIMED.of(mode));
 }
 
 } // namespace
