@@ -1,6 +1,7 @@
 #include "Setup.h"
 #include "Peers.h"
 
+#include <osg/Texture>
 #include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgShadow/ShadowedScene>
@@ -13,6 +14,30 @@ namespace osshar {
 namespace {
 
 using osgShadowSilhouette::SilhouetteShadowTechnique;
+
+/** Keeps every texture's image after OpenGL has it (a file may ask for UnRefImageDataAfterApply,
+ *  as OpenSceneGraph's lz.osgt does): the exact reference samples the images of alpha-tested
+ *  casters on the CPU, after the frames are drawn. */
+class KeepTextureImagesVisitor : public osg::NodeVisitor
+{
+public:
+    KeepTextureImagesVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Node& node) override
+    {
+        keep(node.getStateSet());
+        traverse(node);
+    }
+    void apply(osg::Drawable& drawable) override { keep(drawable.getStateSet()); }
+
+private:
+    static void keep(osg::StateSet* ss)
+    {
+        if (!ss) return;
+        for (unsigned int unit = 0; unit < ss->getTextureAttributeList().size(); ++unit)
+            if (auto* texture = dynamic_cast<osg::Texture*>(ss->getTextureAttribute(unit, osg::StateAttribute::TEXTURE)))
+                texture->setUnRefImageDataAfterApply(false);
+    }
+};
 
 osg::ref_ptr<osg::Group> loadContent(const RenderOptions& o, PreparedScene& scene, std::string& error)
 {
@@ -29,6 +54,8 @@ osg::ref_ptr<osg::Group> loadContent(const RenderOptions& o, PreparedScene& scen
         error = "cannot read '" + o.file + "'";
         return nullptr;
     }
+    KeepTextureImagesVisitor keepImages;
+    node->accept(keepImages);
     osg::ref_ptr<osg::Group> group = new osg::Group;
     if (osgShadow::ShadowedScene* ss = dynamic_cast<osgShadow::ShadowedScene*>(node.get()))
     {

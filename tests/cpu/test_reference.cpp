@@ -11,15 +11,18 @@
 
 #include <gtest/gtest.h>
 
+#include <osg/AlphaFunc>
 #include <osg/Billboard>
 #include <osg/Geode>
 #include <osg/LOD>
 #include <osg/Geometry>
 #include <osg/Group>
+#include <osg/Material>
 #include <osg/MatrixTransform>
 #include <osg/Shape>
 #include <osg/ShapeDrawable>
 #include <osg/Switch>
+#include <osg/Texture2D>
 #include <osg/Viewport>
 #include <osgDB/ReadFile>
 
@@ -662,6 +665,348 @@ TEST(ReferenceTracer, FarCameraDoesNotShadowALitGround)
     farther.fovyDeg = osg::RadiansToDegrees(2.0 * std::atan(0.015 / 20.0));
     const Mask m2 = ossref::computeReferenceMask(*groundScene(Occluder::None), farther, directional({1, 0.3, 0.2}));
     EXPECT_EQ(m2.count(ossref::MASK_LIT), kGround);
+}
+
+// ---------------------------------------------------------------------------------------
+// Alpha-tested cut-outs
+//
+// The caster is the occluder quad [-1, 1]^2 at z = 4 with texture coordinates
+// s = (x + 1) / 2, t = (y + 1) / 2. A light straight down would hide its shadow from the
+// top camera (the quad covers its own footprint, as in QuadStraightUp), so the light is
+// toward (1, 0, 1): ground point (x, y) lies under quad point (x + 4, y), the footprint is
+// [-5, -3] x [-1, 1] (20 x 20 pixels) and ground point (x, y) in it sees the texture at
+// s = (x + 5) / 2, t = (y + 1) / 2. Every texel edge used below falls on a multiple of 0.1
+// on the ground, 0.05 from the nearest pixel centres, so the counts are exact.
+
+/** An RGBA image, width = alphas[0].size(), alphas[j][i] the alpha of texel (i, j): row 0
+ *  of the image, t = 0, comes first. */
+osg::ref_ptr<osg::Image> rgbaImage(const std::vector<std::vector<int>>& alphas)
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    const int width = int(alphas[0].size());
+    const int height = int(alphas.size());
+    image->allocateImage(width, height, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+        {
+            unsigned char* texel = image->data(i, j);
+            texel[0] = texel[1] = texel[2] = 200;
+            texel[3] = (unsigned char)alphas[j][i];
+        }
+    return image;
+}
+
+/** 4 x 4 checkerboard: texel (i, j) opaque (255) when i + j is even, transparent (0) else. */
+osg::ref_ptr<osg::Image> checkerboard()
+{
+    std::vector<std::vector<int>> alphas(4, std::vector<int>(4));
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) alphas[j][i] = (i + j) % 2 == 0 ? 255 : 0;
+    return rgbaImage(alphas);
+}
+
+osg::ref_ptr<osg::Texture2D> texture2D(osg::Image* image, osg::Texture::FilterMode filter,
+                                       osg::Texture::WrapMode wrap = osg::Texture::CLAMP_TO_EDGE)
+{
+    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image);
+    texture->setFilter(osg::Texture::MIN_FILTER, filter);
+    texture->setFilter(osg::Texture::MAG_FILTER, filter);
+    texture->setWrap(osg::Texture::WRAP_S, wrap);
+    texture->setWrap(osg::Texture::WRAP_T, wrap);
+    return texture;
+}
+
+/** quad() with texture coordinates (0, 0) .. (sMax, 1) over its corners. */
+osg::ref_ptr<osg::Geometry> texturedQuad(double x0, double x1, double y0, double y1, double z, float sMax = 1.0f)
+{
+    osg::ref_ptr<osg::Geometry> g = quad(x0, x1, y0, y1, z);
+    osg::ref_ptr<osg::Vec2Array> tc = new osg::Vec2Array;
+    tc->push_back(osg::Vec2(0, 0));
+    tc->push_back(osg::Vec2(sMax, 0));
+    tc->push_back(osg::Vec2(sMax, 1));
+    tc->push_back(osg::Vec2(0, 1));
+    g->setTexCoordArray(0, tc.get(), osg::Array::BIND_PER_VERTEX);
+    return g;
+}
+
+/** The ground [-10, 10]^2 and the caster, returned through `caster` to hang state on. */
+osg::ref_ptr<osg::Group> cutoutScene(osg::ref_ptr<osg::Geometry>& caster)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+    caster = texturedQuad(-1, 1, -1, 1, 4);
+    root->addChild(geode(caster.get()));
+    return root;
+}
+
+/** The checkerboard caster: texture (NEAREST) on the drawable; the alpha test on the
+ *  drawable too unless `alphaTestOn` is null. */
+osg::ref_ptr<osg::Group> checkerboardScene(osg::ref_ptr<osg::Geometry>& caster, const bool* alphaTestOn)
+{
+    osg::ref_ptr<osg::Group> root = cutoutScene(caster);
+    osg::StateSet* ss = caster->getOrCreateStateSet();
+    ss->setTextureAttributeAndModes(0, texture2D(checkerboard().get(), osg::Texture::NEAREST).get());
+    if (alphaTestOn)
+    {
+        ss->setAttribute(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+        ss->setMode(GL_ALPHA_TEST, *alphaTestOn ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
+    }
+    return root;
+}
+
+/** Pixels of value v whose ground point lies in [x0, x1] x [y0, y1]. */
+long long countIn(const Mask& m, double x0, double x1, double y0, double y1, uint8_t v)
+{
+    long long n = 0;
+    for (int j = pixelOf(y0); j <= pixelOf(y1); ++j)
+        for (int i = pixelOf(x0); i <= pixelOf(x1); ++i)
+        {
+            const double cx = -15.0 + 0.1 * (i + 0.5);
+            const double cy = -15.0 + 0.1 * (j + 0.5);
+            if (cx > x0 && cx < x1 && cy > y0 && cy < y1 && m.atGL(i, j) == v) ++n;
+        }
+    return n;
+}
+
+/** Shadowed pixels of the caster's footprint [-5, -3] x [-1, 1] (400 pixels). */
+long long footprintShadow(const Mask& m)
+{
+    return countIn(m, -5, -3, -1, 1, ossref::MASK_NO_LIGHT);
+}
+
+const Light kCutoutLight = directional({1, 0, 1});
+
+TEST(ReferenceCutout, CheckerboardCasterShadowHasHoles)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    const bool on = true;
+    osg::ref_ptr<osg::Group> root = checkerboardScene(caster, &on);
+
+    const ossref::TriangleSoup soup = ossref::collectTriangles(*root);
+    ASSERT_EQ(soup.size(), 4u);
+    ASSERT_EQ(soup.cutouts.size(), 1u);
+    EXPECT_EQ(soup.cutout, (std::vector<int>{-1, -1, 0, 0}));
+    EXPECT_EQ(soup.texCoords.size(), 6u);
+    EXPECT_TRUE(soup.cutouts[0].nearest);
+    EXPECT_EQ(soup.cutouts[0].func, osg::AlphaFunc::GREATER);
+    EXPECT_FLOAT_EQ(soup.cutouts[0].ref, 0.5f);
+    EXPECT_FLOAT_EQ(soup.cutouts[0].alphaScale, 1.0f);
+
+    // 8 of the 16 texels are transparent: half the 400 footprint pixels (5 x 5 per texel)
+    // stay lit.
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+    EXPECT_EQ(countIn(m, -5, -3, -1, 1, ossref::MASK_LIT), 200);
+    EXPECT_EQ(footprintShadow(m), 200);
+    EXPECT_EQ(m.count(ossref::MASK_NO_LIGHT), 200);
+    EXPECT_EQ(m.count(ossref::MASK_BACKGROUND), kBackground);
+    // Texel (0, 0) is opaque and texel (1, 0), (0, 1) are not: image row 0 is t = 0.
+    EXPECT_EQ(ground(m, -4.75, -0.75), ossref::MASK_NO_LIGHT);
+    EXPECT_EQ(ground(m, -4.25, -0.75), ossref::MASK_LIT);
+    EXPECT_EQ(ground(m, -4.75, -0.25), ossref::MASK_LIT);
+    EXPECT_EQ(ground(m, -3.25, 0.75), ossref::MASK_NO_LIGHT); // texel (3, 3)
+}
+
+TEST(ReferenceCutout, AlphaTestOffCastsTheWholeQuad)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    const bool off = false;
+    osg::ref_ptr<osg::Group> root = checkerboardScene(caster, &off);
+    const ossref::TriangleSoup soup = ossref::collectTriangles(*root);
+    EXPECT_TRUE(soup.cutout.empty()); // opaque scenes carry no per-triangle table
+    EXPECT_TRUE(soup.cutouts.empty());
+    EXPECT_TRUE(soup.texCoords.empty());
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+    EXPECT_EQ(footprintShadow(m), 400);
+    EXPECT_EQ(m.count(ossref::MASK_NO_LIGHT), 400);
+}
+
+/** A Group inserted between the root of a cutoutScene and the caster's Geode; the ground
+ *  stays out of its state. */
+osg::StateSet* casterParentState(osg::Group& root)
+{
+    osg::ref_ptr<osg::Group> parent = new osg::Group;
+    osg::ref_ptr<osg::Node> casterNode = root.getChild(1);
+    root.replaceChild(casterNode.get(), parent.get());
+    parent->addChild(casterNode.get());
+    return parent->getOrCreateStateSet();
+}
+
+TEST(ReferenceCutout, AlphaTestInheritedFromAParentGroup)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    osg::ref_ptr<osg::Group> root = checkerboardScene(caster, nullptr);
+    casterParentState(*root)->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+    EXPECT_EQ(footprintShadow(m), 200);
+    EXPECT_EQ(ground(m, -4.75, -0.75), ossref::MASK_NO_LIGHT);
+    EXPECT_EQ(ground(m, -4.25, -0.75), ossref::MASK_LIT);
+}
+
+TEST(ReferenceCutout, OverrideAndProtected)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    const bool on = true;
+    osg::ref_ptr<osg::Group> root = checkerboardScene(caster, &on);
+    osg::StateSet* parentState = casterParentState(*root);
+
+    // The parent's OFF with OVERRIDE beats the drawable's ON: the whole quad casts.
+    parentState->setMode(GL_ALPHA_TEST, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    EXPECT_EQ(footprintShadow(ossref::computeReferenceMask(*root, topCamera(), kCutoutLight)), 400);
+
+    // ... unless the drawable's ON is PROTECTED.
+    caster->getStateSet()->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    const Mask isProtected = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+    EXPECT_EQ(footprintShadow(isProtected), 200);
+    EXPECT_EQ(ground(isProtected, -4.75, -0.75), ossref::MASK_NO_LIGHT);
+
+    // Attributes follow the same rule: the parent's LESS 0.5 with OVERRIDE replaces the
+    // drawable's GREATER 0.5, and keeps the transparent texels instead.
+    parentState->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON);
+    parentState->setAttribute(new osg::AlphaFunc(osg::AlphaFunc::LESS, 0.5f), osg::StateAttribute::OVERRIDE);
+    const Mask inverted = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+    EXPECT_EQ(footprintShadow(inverted), 200);
+    EXPECT_EQ(ground(inverted, -4.75, -0.75), ossref::MASK_LIT);
+    EXPECT_EQ(ground(inverted, -4.25, -0.75), ossref::MASK_NO_LIGHT);
+}
+
+// Primary rays: the checkerboard quad alone (no ground), light straight down. The quad seen
+// from the top camera spans 20 x 20 pixels (its edges at +-1.004 on the ground scale, texel
+// edges at +-0.502 and 0, each 0.05 or more from the nearest pixel centre): 200 pixels see
+// opaque texels (lit) and 200 see the background through the transparent ones.
+TEST(ReferenceCutout, PrimaryRaysSeeThroughHoles)
+{
+    osg::ref_ptr<osg::Geometry> caster = texturedQuad(-1, 1, -1, 1, 4);
+    osg::StateSet* ss = caster->getOrCreateStateSet();
+    ss->setTextureAttributeAndModes(0, texture2D(checkerboard().get(), osg::Texture::NEAREST).get());
+    ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(caster.get()));
+    const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({0, 0, 1}));
+    EXPECT_EQ(m.count(ossref::MASK_LIT), 200);
+    EXPECT_EQ(m.count(ossref::MASK_NO_LIGHT), 0);
+    EXPECT_EQ(m.count(ossref::MASK_BACKGROUND), kSize * kSize - 200);
+    EXPECT_EQ(ground(m, -0.75, -0.75), ossref::MASK_LIT);        // texel (0, 0)
+    EXPECT_EQ(ground(m, -0.25, -0.75), ossref::MASK_BACKGROUND); // texel (1, 0)
+
+    // With the ground under it (drawn first: opaque triangles before the cut-outs) every
+    // pixel shows geometry and is lit: the opaque texels face the light, and the ground
+    // seen through a hole lies at most 0.004 units outward of the hole's point, which is
+    // 0.05 or more inside the hole. A hit shaded with another triangle's plane (the ground's
+    // under an opaque texel) would come out shadowed.
+    osg::ref_ptr<osg::Group> groundFirst = new osg::Group;
+    groundFirst->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+    groundFirst->addChild(root->getChild(0));
+    const Mask withGround = ossref::computeReferenceMask(*groundFirst, topCamera(), directional({0, 0, 1}));
+    EXPECT_EQ(withGround.count(ossref::MASK_LIT), kGround);
+    EXPECT_EQ(withGround.count(ossref::MASK_BACKGROUND), kBackground);
+}
+
+// A 2 x 1 texture, alphas 0 and 1, CLAMP_TO_EDGE, on the caster: texel centres at s = 0.25
+// and 0.75, so LINEAR gives alpha 0 for s <= 0.25, 2 s - 0.5 between, 1 from 0.75 on. The
+// shadow covers the ground points (x, y) with s = (x + 5) / 2 kept by the test:
+//   GREATER 0.5, LINEAR: s > 0.5, x in (-4, -3]: 10 columns x 20 rows = 200;
+//   GREATER 0.3, LINEAR: s > 0.4, x in (-4.2, -3]: 12 columns = 240;
+//   GREATER 0.3, NEAREST: texel 1, s >= 0.5: 200 again.
+TEST(ReferenceCutout, BilinearAlphaCutsBetweenTexelCentres)
+{
+    struct Case
+    {
+        osg::Texture::FilterMode filter;
+        float ref;
+        long long shadow;
+        double firstShadowedX; // the footprint's leftmost shadowed pixel centre
+    };
+    for (const Case& c : {Case{osg::Texture::LINEAR, 0.5f, 200, -3.95}, Case{osg::Texture::LINEAR, 0.3f, 240, -4.15},
+                          Case{osg::Texture::NEAREST, 0.3f, 200, -3.95}})
+    {
+        SCOPED_TRACE(testing::Message() << "filter " << c.filter << ", GREATER " << c.ref);
+        osg::ref_ptr<osg::Geometry> caster;
+        osg::ref_ptr<osg::Group> root = cutoutScene(caster);
+        osg::StateSet* ss = caster->getOrCreateStateSet();
+        ss->setTextureAttributeAndModes(0, texture2D(rgbaImage({{0, 255}}).get(), c.filter).get());
+        ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, c.ref));
+        const Mask m = ossref::computeReferenceMask(*root, topCamera(), kCutoutLight);
+        EXPECT_EQ(footprintShadow(m), c.shadow);
+        EXPECT_EQ(ground(m, c.firstShadowedX, 0.05), ossref::MASK_NO_LIGHT);
+        EXPECT_EQ(ground(m, c.firstShadowedX - 0.1, 0.05), ossref::MASK_LIT);
+    }
+}
+
+// Wrap modes, primary rays: a quad [-10, 10] x [-1, 1] at z = 0 (no perspective) with s from
+// 0 to 2, the 2 x 1 texture (alphas 0, 1) with NEAREST: s = (x + 10) / 10, texel index
+// floor(2 s) = 0, 1, 2, 3 on the quarters starting at x = -10, -5, 0, 5. Indices 2 and 3
+// wrap to 0, 1 (REPEAT), 1, 0 (MIRROR) or 1, 1 (clamp to edge). Kept quarters are lit
+// (light straight down), cut ones background; 50 columns x 20 rows per quarter.
+TEST(ReferenceCutout, WrapModes)
+{
+    struct Case
+    {
+        osg::Texture::WrapMode wrap;
+        long long lit;
+        uint8_t third;  // at x = 2.5
+        uint8_t fourth; // at x = 7.5
+    };
+    const uint8_t lit = ossref::MASK_LIT;
+    const uint8_t none = ossref::MASK_BACKGROUND;
+    for (const Case& c : {Case{osg::Texture::REPEAT, 2000, none, lit}, Case{osg::Texture::MIRROR, 2000, lit, none},
+                          Case{osg::Texture::CLAMP_TO_EDGE, 3000, lit, lit}})
+    {
+        SCOPED_TRACE(testing::Message() << "wrap " << c.wrap);
+        osg::ref_ptr<osg::Geometry> strip = texturedQuad(-10, 10, -1, 1, 0, 2.0f);
+        osg::StateSet* ss = strip->getOrCreateStateSet();
+        ss->setTextureAttributeAndModes(0, texture2D(rgbaImage({{0, 255}}).get(), osg::Texture::NEAREST, c.wrap).get());
+        ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+        osg::ref_ptr<osg::Group> root = new osg::Group;
+        root->addChild(geode(strip.get()));
+        const Mask m = ossref::computeReferenceMask(*root, topCamera(), directional({0, 0, 1}));
+        EXPECT_EQ(m.count(lit), c.lit);
+        EXPECT_EQ(ground(m, -7.5, 0), none);
+        EXPECT_EQ(ground(m, -2.5, 0), lit);
+        EXPECT_EQ(ground(m, 2.5, 0), c.third);
+        EXPECT_EQ(ground(m, 7.5, 0), c.fourth);
+    }
+}
+
+// The Material's front diffuse alpha scales the texture's: 0.6 x 1 > 0.5 keeps the opaque
+// texels, 0.4 x 1 does not. Without a texture the alpha cannot vary: a passing test leaves
+// the triangles opaque, a failing one discards them entirely.
+TEST(ReferenceCutout, MaterialAlphaScalesTheTexture)
+{
+    for (const float alpha : {0.6f, 0.4f})
+    {
+        SCOPED_TRACE(testing::Message() << "material alpha " << alpha);
+        osg::ref_ptr<osg::Material> material = new osg::Material;
+        material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1, 1, 1, alpha));
+
+        osg::ref_ptr<osg::Geometry> caster;
+        const bool on = true;
+        osg::ref_ptr<osg::Group> textured = checkerboardScene(caster, &on);
+        caster->getStateSet()->setAttribute(material.get());
+        EXPECT_EQ(footprintShadow(ossref::computeReferenceMask(*textured, topCamera(), kCutoutLight)),
+                  alpha > 0.5f ? 200 : 0);
+
+        osg::ref_ptr<osg::Group> plain = cutoutScene(caster);
+        caster->getOrCreateStateSet()->setAttribute(material.get());
+        caster->getStateSet()->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+        EXPECT_EQ(ossref::collectTriangles(*plain).cutouts.size(), alpha > 0.5f ? 0u : 1u);
+        EXPECT_EQ(footprintShadow(ossref::computeReferenceMask(*plain, topCamera(), kCutoutLight)),
+                  alpha > 0.5f ? 400 : 0);
+    }
+}
+
+// The shadow scene holds only the casters: a cut-out that does not cast leaves no shadow,
+// a cut-out caster filters the shadow rays of the casters-only scene too.
+TEST(ReferenceCutout, CastersOnlyShadowSceneFiltersToo)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    const bool on = true;
+    osg::ref_ptr<osg::Group> root = checkerboardScene(caster, &on);
+    root->getChild(0)->setNodeMask(0x1); // the ground: seen, does not cast
+    root->getChild(1)->setNodeMask(0x3);
+    const ossref::Tracer tracer(ossref::collectTriangles(*root, 0x2u));
+    const Mask m = tracer.render(topCamera(), kCutoutLight);
+    EXPECT_EQ(footprintShadow(m), 200);
+    EXPECT_EQ(ground(m, -4.25, -0.75), ossref::MASK_LIT);
 }
 
 // ---------------------------------------------------------------------------------------

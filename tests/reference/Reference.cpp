@@ -10,8 +10,10 @@
 #include <osg/CullingSet>
 #include <osg/Geometry>
 #include <osg/LOD>
+#include <osg/Material>
 #include <osg/Notify>
 #include <osg/NodeVisitor>
+#include <osg/Texture2D>
 #include <osg/Transform>
 #include <osg/TriangleFunctor>
 #include <osg/TriangleIndexFunctor>
@@ -19,8 +21,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 namespace ossref {
 
@@ -71,6 +76,7 @@ struct IndexSink
 {
     TriangleCollector* collector = nullptr;
     const std::vector<osg::Vec3d>* vertices = nullptr;
+    const osg::Vec2Array* texCoords = nullptr; // per vertex, or null
     void operator()(unsigned int a, unsigned int b, unsigned int c) const;
 };
 
@@ -80,7 +86,78 @@ struct VertexSink
     void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, bool = false) const;
 };
 
-/** Walks the scene, accumulating Transform matrices and the casts flag of the path. */
+float clamp01(float v)
+{
+    return std::isfinite(v) ? std::min(1.0f, std::max(0.0f, v)) : 0.0f;
+}
+
+bool alphaPasses(osg::AlphaFunc::ComparisonFunction func, float alpha, float ref)
+{
+    switch (func)
+    {
+    case osg::AlphaFunc::NEVER: return false;
+    case osg::AlphaFunc::LESS: return alpha < ref;
+    case osg::AlphaFunc::EQUAL: return alpha == ref;
+    case osg::AlphaFunc::LEQUAL: return alpha <= ref;
+    case osg::AlphaFunc::GREATER: return alpha > ref;
+    case osg::AlphaFunc::NOTEQUAL: return alpha != ref;
+    case osg::AlphaFunc::GEQUAL: return alpha >= ref;
+    default: return true;
+    }
+}
+
+/** One piece of GL state along the node path: an attribute (null for a mode) and the value
+ *  it was set with (ON/OFF for a mode, with the OVERRIDE and PROTECTED bits). */
+struct StateSlot
+{
+    const osg::StateAttribute* attribute = nullptr;
+    unsigned int value = 0;
+    bool set = false;
+
+    /** osg::State::pushModeList / pushAttributeList: a value set with OVERRIDE stays in
+     *  force below unless the incoming one is PROTECTED; otherwise the innermost wins. */
+    void push(const osg::StateAttribute* incoming, unsigned int incomingValue)
+    {
+        if (set && (value & osg::StateAttribute::OVERRIDE) && !(incomingValue & osg::StateAttribute::PROTECTED)) return;
+        attribute = incoming;
+        value = incomingValue;
+        set = true;
+    }
+    bool on() const { return set && (value & osg::StateAttribute::ON); }
+};
+
+/** The state that decides whether a fragment survives the alpha test. */
+struct CutoutState
+{
+    StateSlot alphaTest; // GL_ALPHA_TEST
+    StateSlot alphaFunc;
+    StateSlot material;
+    StateSlot texture;   // unit 0
+    StateSlot texture2D; // GL_TEXTURE_2D on unit 0
+
+    void apply(const osg::StateSet& stateSet)
+    {
+        const osg::StateSet::ModeList& modes = stateSet.getModeList();
+        const auto alphaTestMode = modes.find(GL_ALPHA_TEST);
+        if (alphaTestMode != modes.end()) alphaTest.push(nullptr, alphaTestMode->second);
+        if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::ALPHAFUNC))
+            alphaFunc.push(p->first.get(), p->second);
+        if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::MATERIAL))
+            material.push(p->first.get(), p->second);
+        if (const osg::StateSet::RefAttributePair* p =
+                stateSet.getTextureAttributePair(0, osg::StateAttribute::TEXTURE))
+            texture.push(p->first.get(), p->second);
+        const osg::StateSet::TextureModeList& textureModes = stateSet.getTextureModeList();
+        if (!textureModes.empty())
+        {
+            const auto texture2DMode = textureModes[0].find(GL_TEXTURE_2D);
+            if (texture2DMode != textureModes[0].end()) texture2D.push(nullptr, texture2DMode->second);
+        }
+    }
+};
+
+/** Walks the scene, accumulating Transform matrices, the casts flag of the path and the
+ *  state that makes cut-outs. */
 class TriangleCollector : public osg::NodeVisitor
 {
 public:
@@ -143,8 +220,11 @@ public:
     void apply(osg::Drawable& drawable) override { inScope(drawable, [&] { addDrawable(drawable); }); }
     void apply(osg::Geometry& geometry) override { inScope(geometry, [&] { addGeometry(geometry); }); }
 
-    /** One triangle in world coordinates: kept unless non-finite or of zero area. */
-    void addWorldTriangle(const osg::Vec3d& a, const osg::Vec3d& b, const osg::Vec3d& c)
+    /** One triangle in world coordinates: kept unless non-finite or of zero area. ta, tb,
+     *  tc: its texture coordinates, used when the current drawable is a cut-out. */
+    void addWorldTriangle(const osg::Vec3d& a, const osg::Vec3d& b, const osg::Vec3d& c,
+                          const osg::Vec2f& ta = osg::Vec2f(), const osg::Vec2f& tb = osg::Vec2f(),
+                          const osg::Vec2f& tc = osg::Vec2f())
     {
         const double area2 = ((b - a) ^ (c - a)).length2();
         if (!isFinite(a) || !isFinite(b) || !isFinite(c) || !(area2 > 0.0) || !std::isfinite(area2))
@@ -156,6 +236,19 @@ public:
         _out.vertices.push_back(b);
         _out.vertices.push_back(c);
         _out.casts.push_back(_casts ? 1 : 0);
+        // The per-triangle table exists from the first cut-out on: opaque scenes carry none.
+        if (_cutout >= 0 || !_out.cutout.empty())
+        {
+            _out.cutout.resize(_out.casts.size() - 1, -1);
+            _out.cutout.push_back(_cutout);
+        }
+        if (_cutout >= 0)
+        {
+            const bool textured = _out.cutouts[size_t(_cutout)].image.valid();
+            _out.texCoords.push_back(textured ? ta : osg::Vec2f());
+            _out.texCoords.push_back(textured ? tb : osg::Vec2f());
+            _out.texCoords.push_back(textured ? tc : osg::Vec2f());
+        }
     }
 
     const osg::Matrixd& matrix() const { return _matrix; }
@@ -165,9 +258,46 @@ private:
     void inScope(const osg::Node& node, F&& body)
     {
         const bool saved = _casts;
+        const CutoutState savedState = _state;
         _casts = _casts && (node.getNodeMask() & _castsMask) != 0;
+        if (const osg::StateSet* stateSet = node.getStateSet()) _state.apply(*stateSet);
         body();
         _casts = saved;
+        _state = savedState;
+    }
+
+    /** The alpha test in force for the current drawable, as an index into _out.cutouts, or
+     *  -1 when every fragment passes it (no test, or an alpha that cannot vary and passes).
+     *  `textured`: the drawable has texture coordinates on unit 0. */
+    int currentCutout(bool textured)
+    {
+        const osg::AlphaFunc* func = dynamic_cast<const osg::AlphaFunc*>(_state.alphaFunc.attribute);
+        if (!_state.alphaTest.on() || !func) return -1;
+        AlphaCutout cutout;
+        cutout.func = func->getFunction();
+        cutout.ref = clamp01(func->getReferenceValue());
+        if (const osg::Material* material = dynamic_cast<const osg::Material*>(_state.material.attribute))
+            cutout.alphaScale = clamp01(material->getDiffuse(osg::Material::FRONT).a());
+        const osg::Texture2D* texture = dynamic_cast<const osg::Texture2D*>(_state.texture.attribute);
+        const osg::Image* image = texture ? texture->getImage() : nullptr;
+        if (textured && _state.texture2D.on() && image && image->data() && image->s() > 0 && image->t() > 0)
+        {
+            cutout.image = image;
+            cutout.wrapS = texture->getWrap(osg::Texture::WRAP_S);
+            cutout.wrapT = texture->getWrap(osg::Texture::WRAP_T);
+            cutout.nearest = texture->getFilter(osg::Texture::MAG_FILTER) == osg::Texture::NEAREST;
+        }
+        if (cutout.func == osg::AlphaFunc::ALWAYS ||
+            (!cutout.image && alphaPasses(cutout.func, cutout.alphaScale, cutout.ref)))
+            return -1;
+        const auto key = std::make_tuple(cutout.image.get(), int(cutout.wrapS), int(cutout.wrapT), cutout.nearest,
+                                         int(cutout.func), cutout.ref, cutout.alphaScale);
+        const auto found = _cutoutIndex.find(key);
+        if (found != _cutoutIndex.end()) return found->second;
+        const int index = int(_out.cutouts.size());
+        _out.cutouts.push_back(cutout);
+        _cutoutIndex.emplace(key, index);
+        return index;
     }
 
     void addGeometry(const osg::Geometry& geometry)
@@ -179,17 +309,27 @@ private:
             return;
         }
         for (osg::Vec3d& v : vertices) v = v * _matrix;
+        const osg::Vec2Array* texCoords = dynamic_cast<const osg::Vec2Array*>(geometry.getTexCoordArray(0));
+        if (texCoords && ((texCoords->getBinding() != osg::Array::BIND_PER_VERTEX &&
+                           texCoords->getBinding() != osg::Array::BIND_UNDEFINED) ||
+                          texCoords->size() < vertices.size()))
+            texCoords = nullptr;
+        _cutout = currentCutout(texCoords != nullptr);
         osg::TriangleIndexFunctor<IndexSink> functor;
         functor.collector = this;
         functor.vertices = &vertices;
+        functor.texCoords = _cutout >= 0 ? texCoords : nullptr;
         geometry.accept(functor);
+        _cutout = -1;
     }
 
     void addDrawable(const osg::Drawable& drawable)
     {
+        _cutout = currentCutout(false);
         osg::TriangleFunctor<VertexSink> functor;
         functor.collector = this;
         drawable.accept(functor);
+        _cutout = -1;
     }
 
     osg::Vec3d eyeInLocal() const { return _camera->eye * osg::Matrixd::inverse(_matrix); }
@@ -216,13 +356,20 @@ private:
     const Camera* _camera;
     osg::Matrixd _matrix;
     bool _casts = true;
+    CutoutState _state;
+    int _cutout = -1; // of the drawable being collected
+    std::map<std::tuple<const osg::Image*, int, int, bool, int, float, float>, int> _cutoutIndex;
 };
 
 void IndexSink::operator()(unsigned int a, unsigned int b, unsigned int c) const
 {
     const size_t n = vertices->size();
     if (a >= n || b >= n || c >= n) return;
-    collector->addWorldTriangle((*vertices)[a], (*vertices)[b], (*vertices)[c]);
+    if (texCoords)
+        collector->addWorldTriangle((*vertices)[a], (*vertices)[b], (*vertices)[c], (*texCoords)[a], (*texCoords)[b],
+                                    (*texCoords)[c]);
+    else
+        collector->addWorldTriangle((*vertices)[a], (*vertices)[b], (*vertices)[c]);
 }
 
 void VertexSink::operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, bool) const
@@ -310,6 +457,122 @@ struct PixelResult
     uint8_t grazing = 0;
 };
 
+/** GL's wrap of an integer texel coordinate (OpenGL 4.6, 8.14.2): REPEAT, MIRRORED_REPEAT,
+ *  anything else clamps to the edge. */
+int wrapTexel(double i, int size, osg::Texture::WrapMode mode)
+{
+    // Far outside the texture only the coordinate modulo 2 size matters; an int must hold it.
+    const double limit = 1e9;
+    const long long k = std::isfinite(i) ? (long long)std::max(-limit, std::min(limit, i)) : 0;
+    switch (mode)
+    {
+    case osg::Texture::REPEAT:
+    {
+        const long long r = k % size;
+        return int(r < 0 ? r + size : r);
+    }
+    case osg::Texture::MIRROR:
+    {
+        long long m = k % (2 * size);
+        if (m < 0) m += 2 * size;
+        m -= size;
+        return int((size - 1) - (m >= 0 ? m : -(1 + m)));
+    }
+    default: return int(std::max(0LL, std::min<long long>(size - 1, k)));
+    }
+}
+
+/** An AlphaCutout ready for sampling: the image's level-0 alphas as floats, read once. */
+struct PreparedCutout
+{
+    PreparedCutout(const AlphaCutout& cutout, std::shared_ptr<const std::vector<float>> texels)
+        : alpha(std::move(texels)), width(cutout.image ? cutout.image->s() : 0),
+          height(cutout.image ? cutout.image->t() : 0), wrapS(cutout.wrapS), wrapT(cutout.wrapT),
+          nearest(cutout.nearest), func(cutout.func), ref(cutout.ref), scale(cutout.alphaScale)
+    {
+    }
+
+    float texel(int i, int j) const { return (*alpha)[size_t(j) * size_t(width) + size_t(i)]; }
+
+    /** The fragment alpha at texture coordinate tc: GL's level-0 sampling (texel centres at
+     *  (i + 0.5) / size), times the material's alpha. */
+    float alphaAt(const osg::Vec2f& tc) const
+    {
+        if (!alpha) return scale;
+        const double u = double(tc.x()) * width;
+        const double v = double(tc.y()) * height;
+        if (nearest)
+            return scale * texel(wrapTexel(std::floor(u), width, wrapS), wrapTexel(std::floor(v), height, wrapT));
+        const double i0 = std::floor(u - 0.5);
+        const double j0 = std::floor(v - 0.5);
+        const double a = u - 0.5 - i0;
+        const double b = v - 0.5 - j0;
+        const int is[2] = {wrapTexel(i0, width, wrapS), wrapTexel(i0 + 1.0, width, wrapS)};
+        const int js[2] = {wrapTexel(j0, height, wrapT), wrapTexel(j0 + 1.0, height, wrapT)};
+        const double sampled = (1.0 - a) * (1.0 - b) * texel(is[0], js[0]) + a * (1.0 - b) * texel(is[1], js[0]) +
+                               (1.0 - a) * b * texel(is[0], js[1]) + a * b * texel(is[1], js[1]);
+        return scale * float(sampled);
+    }
+
+    bool keeps(const osg::Vec2f& tc) const { return alphaPasses(func, alphaAt(tc), ref); }
+
+    std::shared_ptr<const std::vector<float>> alpha; // null: untextured
+    int width;
+    int height;
+    osg::Texture::WrapMode wrapS;
+    osg::Texture::WrapMode wrapT;
+    bool nearest;
+    osg::AlphaFunc::ComparisonFunction func;
+    float ref;
+    float scale;
+};
+
+/** The level-0 alphas of an image, row 0 first (t = 0), through osg::Image::getColor. */
+std::shared_ptr<const std::vector<float>> imageAlphas(const osg::Image& image)
+{
+    auto texels = std::make_shared<std::vector<float>>();
+    texels->reserve(size_t(image.s()) * size_t(image.t()));
+    for (int j = 0; j < image.t(); ++j)
+        for (int i = 0; i < image.s(); ++i) texels->push_back(clamp01(image.getColor(unsigned(i), unsigned(j)).a()));
+    return texels;
+}
+
+/** A cut-out triangle as its Embree filter sees it. */
+struct CutoutTriangle
+{
+    osg::Vec2f texCoords[3];
+    unsigned int cutout; // index into CutoutGeometry::cutouts
+};
+
+/** The user data of an Embree geometry of cut-out triangles, indexed by primID. */
+struct CutoutGeometry
+{
+    const std::vector<PreparedCutout>* cutouts = nullptr;
+    std::vector<CutoutTriangle> triangles;
+};
+
+/** Intersection and occlusion filter of the cut-out geometries: rejects the hits whose
+ *  fragment the alpha test discards. Reads only; safe from several threads. */
+void cutoutFilter(const RTCFilterFunctionNArguments* args)
+{
+    const CutoutGeometry& geometry = *static_cast<const CutoutGeometry*>(args->geometryUserPtr);
+    for (unsigned int i = 0; i < args->N; ++i)
+    {
+        if (args->valid[i] == 0) continue;
+        const unsigned int prim = RTCHitN_primID(args->hit, args->N, i);
+        if (prim >= geometry.triangles.size()) continue;
+        const float u = RTCHitN_u(args->hit, args->N, i);
+        const float v = RTCHitN_v(args->hit, args->N, i);
+        const CutoutTriangle& t = geometry.triangles[prim];
+        const osg::Vec2f tc = t.texCoords[0] * (1.0f - u - v) + t.texCoords[1] * u + t.texCoords[2] * v;
+        if (!(*geometry.cutouts)[t.cutout].keeps(tc)) args->valid[i] = 0;
+    }
+}
+
+/** Embree geometry IDs of a scene: opaque triangles, then cut-outs. */
+const unsigned int OPAQUE_GEOMETRY = 0;
+const unsigned int CUTOUT_GEOMETRY = 1;
+
 void reportEmbreeError(void*, RTCError code, const char* message)
 {
     OSG_WARN << "ossref: Embree error " << int(code) << ": " << (message ? message : "") << std::endl;
@@ -337,9 +600,15 @@ struct Tracer::Impl
     RTCDevice device = nullptr;
     RTCScene primary = nullptr;
     RTCScene shadow = nullptr;  // == primary when every visible triangle casts
-    std::vector<osg::Vec3d> normals;  // per primary triangle, unit length
+    // Per primary triangle, opaque ones first and then cut-outs (the order of the primary
+    // scene's geometries): (geomID, primID) is triangle primID + firstPrim[geomID].
+    std::vector<osg::Vec3d> normals; // unit length
+    unsigned int firstPrim[2] = {0, 0};
     osg::Vec3d centre;
     double radius = 0.0;
+    std::vector<PreparedCutout> cutouts; // TriangleSoup::cutouts
+    CutoutGeometry primaryCutouts;
+    CutoutGeometry shadowCutouts;
 
     ~Impl()
     {
@@ -349,7 +618,10 @@ struct Tracer::Impl
     }
 
     void build(const TriangleSoup& soup);
-    RTCScene makeScene(const TriangleSoup& soup, bool castersOnly);
+    RTCScene makeScene(const TriangleSoup& soup, bool castersOnly, CutoutGeometry& cutoutGeometry);
+    template <class Keep>
+    void attachTriangles(RTCScene scene, const TriangleSoup& soup, unsigned int geomID, Keep&& keep,
+                         CutoutGeometry* cutoutGeometry);
     std::vector<osg::Vec3d> origins;  // per primary triangle, its first vertex (recentred): a point of its plane
     double offsetScale = DEFAULT_OFFSET_SCALE;
 
@@ -371,55 +643,114 @@ void Tracer::Impl::build(const TriangleSoup& soup)
     device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("ossref: cannot create an Embree device");
     rtcSetDeviceErrorFunction(device, reportEmbreeError, nullptr);
+    if (!soup.cutouts.empty() && !rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+        throw std::runtime_error("ossref: Embree was built without filter functions, needed by alpha-tested triangles");
 
-    primary = makeScene(soup, false);
+    // Images shared by several cut-outs are read once.
+    std::map<const osg::Image*, std::shared_ptr<const std::vector<float>>> alphas;
+    cutouts.reserve(soup.cutouts.size());
+    for (const AlphaCutout& c : soup.cutouts)
+    {
+        std::shared_ptr<const std::vector<float>> texels;
+        if (c.image.valid())
+        {
+            auto& cached = alphas[c.image.get()];
+            if (!cached) cached = imageAlphas(*c.image);
+            texels = cached;
+        }
+        cutouts.emplace_back(c, texels);
+    }
+
+    primary = makeScene(soup, false, primaryCutouts);
     const bool allCast = std::all_of(soup.casts.begin(), soup.casts.end(), [](uint8_t c) { return c != 0; });
-    shadow = allCast ? primary : makeScene(soup, true);
+    shadow = allCast ? primary : makeScene(soup, true, shadowCutouts);
 
     normals.reserve(soup.size());
     origins.reserve(soup.size());
-    for (size_t t = 0; t < soup.size(); ++t)
+    for (const bool cut : {false, true})
     {
-        const osg::Vec3d* v = &soup.vertices[3 * t];
-        osg::Vec3d n = (v[1] - v[0]) ^ (v[2] - v[0]);
-        n.normalize();
-        normals.push_back(n);
-        origins.push_back(v[0] - centre);
+        firstPrim[cut ? CUTOUT_GEOMETRY : OPAQUE_GEOMETRY] = unsigned(normals.size());
+        for (size_t t = 0; t < soup.size(); ++t)
+        {
+            if ((soup.cutoutOf(t) >= 0) != cut) continue;
+            const osg::Vec3d* v = &soup.vertices[3 * t];
+            osg::Vec3d n = (v[1] - v[0]) ^ (v[2] - v[0]);
+            n.normalize();
+            normals.push_back(n);
+            origins.push_back(v[0] - centre);
+        }
+        if (soup.cutout.empty()) break; // no cut-outs
     }
 }
 
-RTCScene Tracer::Impl::makeScene(const TriangleSoup& soup, bool castersOnly)
+/** Attaches, as geometry `geomID`, the soup's triangles for which keep(t) holds, in soup
+ *  order. With `cutoutGeometry`, they are cut-outs: the geometry filters its hits. */
+template <class Keep>
+void Tracer::Impl::attachTriangles(RTCScene scene, const TriangleSoup& soup, unsigned int geomID, Keep&& keep,
+                                   CutoutGeometry* cutoutGeometry)
+{
+    size_t count = 0;
+    for (size_t t = 0; t < soup.size(); ++t) count += keep(t) ? 1 : 0;
+    if (count == 0) return;
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    float* vb = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
+    unsigned* ib = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
+    if (cutoutGeometry)
+    {
+        cutoutGeometry->cutouts = &cutouts;
+        cutoutGeometry->triangles.reserve(count);
+    }
+    size_t k = 0;
+    size_t cutoutOrdinal = 0; // of triangle t among the soup's cut-outs: its texCoords
+    for (size_t t = 0; t < soup.size(); ++t)
+    {
+        const int cutout = soup.cutoutOf(t);
+        const size_t ordinal = cutout >= 0 ? cutoutOrdinal++ : 0;
+        if (!keep(t)) continue;
+        for (int i = 0; i < 3; ++i)
+        {
+            const osg::Vec3d v = soup.vertices[3 * t + i] - centre;
+            vb[9 * k + 3 * i + 0] = float(v.x());
+            vb[9 * k + 3 * i + 1] = float(v.y());
+            vb[9 * k + 3 * i + 2] = float(v.z());
+            ib[3 * k + i] = unsigned(3 * k + i);
+        }
+        if (cutoutGeometry)
+        {
+            CutoutTriangle triangle;
+            for (int i = 0; i < 3; ++i)
+                triangle.texCoords[i] =
+                    3 * ordinal + i < soup.texCoords.size() ? soup.texCoords[3 * ordinal + i] : osg::Vec2f();
+            triangle.cutout = unsigned(cutout);
+            cutoutGeometry->triangles.push_back(triangle);
+        }
+        ++k;
+    }
+    if (cutoutGeometry)
+    {
+        rtcSetGeometryUserData(geometry, cutoutGeometry);
+        rtcSetGeometryIntersectFilterFunction(geometry, cutoutFilter);
+        rtcSetGeometryOccludedFilterFunction(geometry, cutoutFilter);
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, geomID);
+    rtcReleaseGeometry(geometry);
+}
+
+RTCScene Tracer::Impl::makeScene(const TriangleSoup& soup, bool castersOnly, CutoutGeometry& cutoutGeometry)
 {
     RTCScene scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
-    size_t count = 0;
-    for (uint8_t c : soup.casts) count += (!castersOnly || c) ? 1 : 0;
-    if (count > 0)
-    {
-        RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        float* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                3 * sizeof(float), 3 * count));
-        unsigned* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                      3 * sizeof(unsigned), count));
-        size_t k = 0;
-        for (size_t t = 0; t < soup.size(); ++t)
-        {
-            if (castersOnly && !soup.casts[t]) continue;
-            for (int i = 0; i < 3; ++i)
-            {
-                const osg::Vec3d v = soup.vertices[3 * t + i] - centre;
-                vb[9 * k + 3 * i + 0] = float(v.x());
-                vb[9 * k + 3 * i + 1] = float(v.y());
-                vb[9 * k + 3 * i + 2] = float(v.z());
-                ib[3 * k + i] = unsigned(3 * k + i);
-            }
-            ++k;
-        }
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(scene, geometry);
-        rtcReleaseGeometry(geometry);
-    }
+    const auto inScene = [&](size_t t) { return !castersOnly || soup.casts[t] != 0; };
+    attachTriangles(
+        scene, soup, OPAQUE_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) < 0; }, nullptr);
+    if (!soup.cutout.empty())
+        attachTriangles(
+            scene, soup, CUTOUT_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) >= 0; },
+            &cutoutGeometry);
     rtcCommitScene(scene);
     return scene;
 }
@@ -470,17 +801,19 @@ PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, i
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(primary, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.primID >= normals.size()) return result;
+    if (rh.hit.geomID != OPAQUE_GEOMETRY && rh.hit.geomID != CUTOUT_GEOMETRY) return result;
+    const size_t triangle = size_t(rh.hit.primID) + firstPrim[rh.hit.geomID];
+    if (triangle >= normals.size()) return result;
 
     // Embree's hit distance is a float, good to a few units in the last place of the
     // distance from the camera: the hit is moved onto the plane of its triangle in double
     // precision, so that the shadow ray's offset below need not cover the camera distance.
-    osg::Vec3d n = normals[rh.hit.primID];
+    osg::Vec3d n = normals[triangle];
     double t = double(rh.ray.tfar);
     const double nd = n * dir;
     if (std::fabs(nd) > 1e-12)
     {
-        const double exact = ((origins[rh.hit.primID] - org) * n) / nd;
+        const double exact = ((origins[triangle] - org) * n) / nd;
         if (std::isfinite(exact) && exact > 0.0) t = exact;
     }
     const osg::Vec3d p = org + dir * t;

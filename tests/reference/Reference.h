@@ -8,12 +8,15 @@
 #ifndef OSGSHADOWSILHOUETTE_REFERENCE
 #define OSGSHADOWSILHOUETTE_REFERENCE 1
 
+#include <osg/AlphaFunc>
 #include <osg/Camera>
 #include <osg/Image>
 #include <osg/Light>
 #include <osg/LightSource>
 #include <osg/Matrixd>
 #include <osg/Node>
+#include <osg/Texture>
+#include <osg/Vec2f>
 #include <osg/Vec3d>
 #include <osg/ref_ptr>
 
@@ -103,14 +106,43 @@ struct Mask
     long long count(uint8_t v) const;
 };
 
-/** World-space triangles of a scene, as the reference sees them. */
+/** The alpha test that decides which fragments of a cut-out ("alpha-tested") triangle the
+ *  rasterizer keeps, for camera and shadow passes alike. The fragment's alpha at texture
+ *  coordinate (s, t) is alphaScale times the alpha of `image` sampled there as GL samples
+ *  level 0 of a 2D texture (alphaScale alone without an image); the fragment is kept when
+ *  `alpha func ref` holds. */
+struct AlphaCutout
+{
+    /** The unit-0 osg::Texture2D's image (row 0 is t = 0, as GL uploads it); null when the
+     *  triangle is not textured. Alphas come from osg::Image::getColor (1 for formats
+     *  without alpha). */
+    osg::ref_ptr<const osg::Image> image;
+    osg::Texture::WrapMode wrapS = osg::Texture::REPEAT; ///< REPEAT, MIRROR, else clamp to edge
+    osg::Texture::WrapMode wrapT = osg::Texture::REPEAT;
+    bool nearest = false; ///< mag filter NEAREST: nearest texel; else bilinear
+    osg::AlphaFunc::ComparisonFunction func = osg::AlphaFunc::ALWAYS;
+    float ref = 0.0f;        ///< the AlphaFunc's reference value clamped to [0, 1]
+    float alphaScale = 1.0f; ///< front diffuse alpha of the osg::Material (1 without), in [0, 1]
+};
+
+/** World-space triangles of a scene, as the reference sees them. Cut-outs are described by
+ *  the last three fields; a scene without them leaves all three empty. */
 struct TriangleSoup
 {
     std::vector<osg::Vec3d> vertices;  ///< three per triangle, world coordinates
     std::vector<uint8_t> casts;         ///< per triangle: 1 if it casts shadows
     long long skipped = 0;              ///< triangles dropped: NaN/Inf or zero area
+    /** Per triangle: index into `cutouts` of its alpha test, -1 for an opaque triangle.
+     *  Empty when every triangle is opaque (read it through cutoutOf()). */
+    std::vector<int> cutout;
+    /** Three unit-0 texture coordinates per cut-out triangle, in triangle order: the k-th
+     *  triangle whose cutout is not -1 owns texCoords[3k .. 3k + 2]. (0, 0) when its
+     *  cut-out has no image. */
+    std::vector<osg::Vec2f> texCoords;
+    std::vector<AlphaCutout> cutouts; ///< the distinct alpha tests of the scene
 
     size_t size() const { return casts.size(); }
+    int cutoutOf(size_t triangle) const { return cutout.empty() ? -1 : cutout[triangle]; }
 };
 
 /** Every triangle of every drawable under `scene`, in world coordinates (matrices of
@@ -120,7 +152,22 @@ struct TriangleSoup
  *  when every node on its path passes (nodeMask & traversalMask & castsMask), as
  *  osgShadow's casts pass does. Only active children of switches are visited. An
  *  osg::Camera at the root is looked through (its children are the scene, its view matrix
- *  is ignored); nested osg::Camera nodes (render passes, HUDs) are skipped. */
+ *  is ignored); nested osg::Camera nodes (render passes, HUDs) are skipped.
+ *
+ *  Cut-outs: the StateSets of the nodes and drawables on a triangle's path are accumulated
+ *  as osg::State does (the innermost value wins, except that a value set with OVERRIDE
+ *  keeps its descendants' values out unless they are PROTECTED) for GL_ALPHA_TEST, the
+ *  osg::AlphaFunc, the osg::Material, and on texture unit 0 the texture attribute and the
+ *  GL_TEXTURE_2D mode. A triangle is a cut-out when GL_ALPHA_TEST is ON and an AlphaFunc is
+ *  present; its alpha is the Material's front diffuse alpha (1 without a Material) times,
+ *  when an osg::Texture2D with an image is on unit 0 with GL_TEXTURE_2D ON and the
+ *  osg::Geometry has a per-vertex osg::Vec2Array as texture coordinate array 0, the
+ *  texture's alpha (AlphaCutout). Not modelled: vertex colours, osg::TexMat and texture
+ *  coordinate generation, the texture environment (alphas are multiplied, as GL_MODULATE
+ *  does), lighting (the Material's alpha is used with lighting on or off), mipmaps and the
+ *  min filter (level 0 through the mag filter), border colours, other texture types and
+ *  units, shaders that discard fragments themselves. A cut-out whose alpha cannot vary
+ *  and passes (no texture, or func ALWAYS) is stored as opaque. */
 TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask = ~0u,
                               unsigned int traversalMask = ~0u);
 
@@ -133,10 +180,13 @@ TriangleSoup collectTriangles(const osg::Node& scene, const Camera* camera, unsi
                               unsigned int traversalMask = ~0u);
 
 /** A scene prepared for ray casting (Embree BVHs built once), to render reference masks
- *  for several cameras and lights. render() is const and may be called from several
- *  threads. Throws std::runtime_error if Embree cannot be initialised. Measured on two
- *  cores: 100k triangles build in ~0.1 s and render 1024x768 in ~0.2-0.4 s; 1M triangles
- *  build in ~1 s. */
+ *  for several cameras and lights. Cut-out triangles (TriangleSoup::cutouts) go into an
+ *  Embree geometry of their own whose intersection and occlusion filters sample the alpha
+ *  test at each hit, so that primary and shadow rays pass through the fragments the
+ *  rasterizer discards. render() is const and may be called from several threads. Throws
+ *  std::runtime_error if Embree cannot be initialised, or if the soup has cut-outs and
+ *  Embree was built without filter functions. Measured on two cores: 100k triangles
+ *  build in ~0.1 s and render 1024x768 in ~0.2-0.4 s; 1M triangles build in ~1 s. */
 class Tracer
 {
 public:
