@@ -1,11 +1,13 @@
 #include "Scenes.h"
 #include "Meshes.h"
 
+#include <osg/AlphaFunc>
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/MatrixTransform>
 #include <osg/Material>
 #include <osg/NodeVisitor>
+#include <osg/Texture2D>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osgUtil/SmoothingVisitor>
@@ -305,6 +307,115 @@ Scene ringScene()
     return s;
 }
 
+/** An RGBA texture of `size` x `size` texels whose alpha is 255 where `opaque(s, t)` holds at
+ *  the texel's centre (s, t in [0, 1]) and 0 elsewhere; linear filtering on level 0 only
+ *  (no mipmaps: every view then samples the same alpha, as the reference does). */
+template <class F>
+osg::ref_ptr<osg::Texture2D> cutoutTexture(int size, const osg::Vec3& rgb, F opaque)
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int t = 0; t < size; ++t)
+        for (int s = 0; s < size; ++s)
+        {
+            unsigned char* p = image->data(s, t);
+            const bool on = opaque((s + 0.5) / size, (t + 0.5) / size);
+            p[0] = static_cast<unsigned char>(255 * rgb.x());
+            p[1] = static_cast<unsigned char>(255 * rgb.y());
+            p[2] = static_cast<unsigned char>(255 * rgb.z());
+            p[3] = on ? 255 : 0;
+        }
+    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    return texture;
+}
+
+/** A vertical card from `a` to `b` (bottom edge), `height` tall, texture coordinates 0..1. */
+osg::ref_ptr<osg::Geometry> makeCard(const osg::Vec3& a, const osg::Vec3& b, float height)
+{
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    const osg::Vec3 up(0, 0, height);
+    v->push_back(a);
+    v->push_back(b);
+    v->push_back(b + up);
+    v->push_back(a + up);
+    osg::Vec3 n = (b - a) ^ up;
+    n.normalize();
+    osg::ref_ptr<osg::Vec3Array> normals = new osg::Vec3Array(1, &n);
+    osg::ref_ptr<osg::Vec2Array> tc = new osg::Vec2Array;
+    tc->push_back(osg::Vec2(0, 0));
+    tc->push_back(osg::Vec2(1, 0));
+    tc->push_back(osg::Vec2(1, 1));
+    tc->push_back(osg::Vec2(0, 1));
+    g->setVertexArray(v.get());
+    g->setNormalArray(normals.get(), osg::Array::BIND_OVERALL);
+    g->setTexCoordArray(0, tc.get());
+    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    return g;
+}
+
+/** Alpha-tested casters: a fence panel with diamond holes and crossed cards of leaves, each a
+ *  quad whose shape is cut out of it by its texture's alpha and an osg::AlphaFunc
+ *  (GREATER 0.5), over a ground. */
+Scene foliageScene()
+{
+    Scene s{"foliage", new osg::Group, {}};
+    s.root->setName("foliage: alpha-tested fence and leaf cards");
+    s.root->addChild(coloured(makeGround(0, 0, 20), GROUND));
+    osg::ref_ptr<osg::Group> cutouts = new osg::Group;
+    cutouts->setName("alpha-tested casters");
+    osg::StateSet* ss = cutouts->getOrCreateStateSet();
+    ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+    ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
+    s.root->addChild(cutouts.get());
+
+    // The fence: bars along the diagonals of a 6 x 3 lattice (holes are diamonds).
+    osg::ref_ptr<osg::Geode> fence = coloured(makeCard(osg::Vec3(-4.5f, 1.5f, 0), osg::Vec3(1.5f, 1.5f, 0), 3.0f),
+                                              osg::Vec4(0.8f, 0.8f, 0.8f, 1));
+    fence->getDrawable(0)->setName("fence");
+    fence->getOrCreateStateSet()->setTextureAttributeAndModes(
+        0, cutoutTexture(128, osg::Vec3(0.55f, 0.4f, 0.25f), [](double u, double v) {
+            const double a = std::fabs(std::fmod(6.0 * u + 3.0 * v, 1.0) - 0.5);
+            const double b = std::fabs(std::fmod(6.0 * u - 3.0 * v + 3.0, 1.0) - 0.5);
+            return a > 0.38 || b > 0.38 || v < 0.04 || v > 0.96;
+        }));
+    cutouts->addChild(fence.get());
+
+    // Two crossed cards of round leaves on a stem.
+    osg::ref_ptr<osg::Texture2D> leaves = cutoutTexture(128, osg::Vec3(0.3f, 0.6f, 0.25f), [](double u, double v) {
+        if (std::fabs(u - 0.5) < 0.02) return true; // the stem
+        for (int i = 0; i < 7; ++i)
+        {
+            const double cu = 0.5 + (i % 2 ? 0.22 : -0.22) * (1.0 - 0.1 * i), cv = 0.15 + 0.12 * i;
+            const double r = 0.13 - 0.01 * i;
+            if ((u - cu) * (u - cu) + (v - cv) * (v - cv) < r * r) return true;
+        }
+        return false;
+    });
+    for (int k = 0; k < 2; ++k)
+    {
+        const double a = osg::DegreesToRadians(30.0 + 90.0 * k);
+        const osg::Vec3 d(float(1.5 * std::cos(a)), float(1.5 * std::sin(a)), 0);
+        const osg::Vec3 c(3.0f, -1.0f, 0);
+        osg::ref_ptr<osg::Geode> card = coloured(makeCard(c - d, c + d, 3.5f), osg::Vec4(0.8f, 0.8f, 0.8f, 1));
+        card->getDrawable(0)->setName(k == 0 ? "leaves 1" : "leaves 2");
+        card->getOrCreateStateSet()->setTextureAttributeAndModes(0, leaves.get());
+        cutouts->addChild(card.get());
+    }
+    ss->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON);
+
+    // An opaque box for comparison.
+    s.root->addChild(coloured(makeBox(osg::Vec3(-2.0f, -3.0f, 0.75f), osg::Vec3(1.5f, 1.5f, 1.5f)),
+                              osg::Vec4(0.3f, 0.5f, 0.85f, 1)));
+    s.root->addChild(makeLight(osg::Vec4(0.3f, -0.55f, 0.78f, 0.0f)));
+    s.view = {osg::Vec3d(1, -15, 9), osg::Vec3d(0, -0.5, 1.0), osg::Vec3d(0, 0, 1), 40.0};
+    return s;
+}
+
 class FindLightsVisitor : public osg::NodeVisitor
 {
 public:
@@ -327,7 +438,7 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant", "ring"};
+    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant", "ring", "foliage"};
 }
 
 Scene createScene(const std::string& name)
@@ -342,6 +453,7 @@ Scene createScene(const std::string& name)
     if (name == "grazing") return grazingScene();
     if (name == "elephant") return elephantScene();
     if (name == "ring") return ringScene();
+    if (name == "foliage") return foliageScene();
     return Scene{name, nullptr, {}};
 }
 

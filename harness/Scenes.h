@@ -30,7 +30,9 @@ struct Scene
  *  "dueling" (the default scene with the camera facing the light) and "grazing" (the default
  *  scene lit from 1.5 degrees above the ground, with a wall that receives the long shadows),
  *  "elephant" (libcgal-demo's elephant subdivided to 355,712 triangles on a ground plane),
- *  "ring" (a point light amid its casters: eight pillars around it). */
+ *  "ring" (a point light amid its casters: eight pillars around it), "foliage" (alpha-tested
+ *  casters: a fence panel with diamond holes and crossed cards of leaves, cut out by their
+ *  textures' alpha and an osg::AlphaFunc). */
 std::vector<std::string> sceneNames();
 
 /** A built-in scene by name; root is null for an unknown name, and for "bunny" when its

@@ -131,27 +131,55 @@ private:
     MeshCache& _meshCache;
 };
 
-/** Tags every StateSet that carries a texture on unit 0 with OSS_BASE_TEXTURE, so the
- *  receiver shading samples it. */
+/** Tags the scene's StateSets for the technique's shaders: OSS_BASE_TEXTURE where unit 0
+ *  carries a texture (the receiver shading samples it), and OSS_ALPHA_TEST with the same
+ *  value as the StateSet's GL_ALPHA_TEST mode (ON or OFF, OVERRIDE and PROTECTED alike, so
+ *  the define is inherited exactly as the mode is), so the depth passes output the alpha an
+ *  osg::AlphaFunc tests. Records the alpha-tested drawables (GL_ALPHA_TEST on along their
+ *  path, as far as the StateSets on that path say) for the warning of the stencil modes. */
 class TagBaseTextureVisitor : public osg::NodeVisitor
 {
 public:
     TagBaseTextureVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
     void apply(osg::Node& node) override
     {
+        const AlphaTest saved = _alphaTest;
         tag(node.getStateSet());
         traverse(node);
+        _alphaTest = saved;
     }
-    void apply(osg::Drawable& drawable) override { tag(drawable.getStateSet()); }
+    void apply(osg::Drawable& drawable) override
+    {
+        const AlphaTest saved = _alphaTest;
+        tag(drawable.getStateSet());
+        if (_alphaTest.on) alphaTested.push_back(&drawable);
+        _alphaTest = saved;
+    }
+
+    std::vector<osg::ref_ptr<osg::Drawable>> alphaTested; ///< drawables under GL_ALPHA_TEST ON
 
 private:
-    static void tag(osg::StateSet* ss)
+    struct AlphaTest
+    {
+        bool on = false;
+        bool overridden = false;
+    };
+
+    void tag(osg::StateSet* ss)
     {
         if (!ss) return;
         const osg::StateAttribute* tex = ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE);
         if (tex && (ss->getTextureMode(0, GL_TEXTURE_2D) & osg::StateAttribute::ON))
             ss->setDefine(shader::DEFINE_BASE_TEXTURE);
+        const osg::StateAttribute::GLModeValue mode = ss->getMode(GL_ALPHA_TEST);
+        if (mode == osg::StateAttribute::INHERIT) return;
+        ss->setDefine(shader::DEFINE_ALPHA_TEST, mode);
+        if (_alphaTest.overridden && !(mode & osg::StateAttribute::PROTECTED)) return;
+        _alphaTest.on = (mode & osg::StateAttribute::ON) != 0;
+        _alphaTest.overridden = (mode & osg::StateAttribute::OVERRIDE) != 0;
     }
+
+    AlphaTest _alphaTest;
 };
 
 /** World bounds of the shadowed scene's drawables under @p mask, as @p view sees them,

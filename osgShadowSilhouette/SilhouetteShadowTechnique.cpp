@@ -426,6 +426,7 @@ void SilhouetteShadowTechnique::init()
 
     TagBaseTextureVisitor tagger;
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
+    _alphaTested.assign(tagger.alphaTested.begin(), tagger.alphaTested.end());
 
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
@@ -440,6 +441,7 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createPrepassStateSet() c
     osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
     ss->setAttributeAndModes(_prepassProgram.get(), overrideOn); // ftransform(), as the receivers' program
     ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
+    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested receivers' cut-outs
     ss->setRenderBinDetails(DEPTH_PREPASS_BIN, "RenderBin", osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
     return ss;
 }
@@ -459,7 +461,34 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet()
     ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE); // open casters too
     ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested casters' cut-outs
     return ss;
+}
+
+void SilhouetteShadowTechnique::warnAlphaTested(bool hybrid) const
+{
+    // One message per mode for the drawables not yet named in it: a forest of billboards is
+    // hundreds of alpha-tested drawables.
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
+    std::vector<std::string> names;
+    for (const osg::observer_ptr<osg::Drawable>& weak : _alphaTested)
+    {
+        osg::ref_ptr<osg::Drawable> drawable;
+        if (!weak.lock(drawable) || !_warnedAlphaTested.insert({hybrid, drawable.get()}).second) continue;
+        names.push_back(drawable->getName().empty() ? "(unnamed)" : "'" + drawable->getName() + "'");
+    }
+    if (names.empty()) return;
+    constexpr std::size_t shown = 4;
+    std::string list;
+    for (std::size_t i = 0; i < names.size() && i < shown; ++i) list += (i ? ", " : "") + names[i];
+    if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
+    const bool one = names.size() == 1;
+    OSG_WARN << "osgShadowSilhouette: " << (hybrid ? "HYBRID" : "SHADOW_VOLUME") << ": " << names.size()
+             << (one ? " drawable is" : " drawables are") << " alpha-tested (GL_ALPHA_TEST): " << list << "; "
+             << (hybrid ? "the exact test at silhouette pixels takes their triangles as opaque, so light through "
+                          "their cut-outs is lost along the shadows' edges"
+                        : "stencil shadow volumes cannot cut their shapes out, so they cast their whole triangles")
+             << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
 void SilhouetteShadowTechnique::update(osg::NodeVisitor& nv)
@@ -678,6 +707,8 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
+    if ((frame.mode == SHADOW_VOLUME || frame.mode == HYBRID) && !_alphaTested.empty())
+        warnAlphaTested(frame.mode == HYBRID);
     // The eye pass's configuration, filled in as the frame is planned and applied at the end.
     detail::EyePassPlan eye;
     eye.mode = frame.mode;
@@ -820,6 +851,12 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
     updateViewUniforms(cv, vd, lights, slots, eye);
     detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(eye));
+    // A mask is 0 or 1: a blended scene (an alpha-tested tree that also blends) must not
+    // mix it with what lies behind. The alpha still reaches the scene's osg::AlphaFunc.
+    if (_debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES)
+        vd.receiverStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    else
+        vd.receiverStateSet->removeMode(GL_BLEND);
     cullProgramLinkCheck(cv);
     if (const osg::Viewport* viewport = cv.getViewport())
         stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());

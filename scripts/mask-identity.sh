@@ -23,7 +23,7 @@ export OSG_NOTIFY_LEVEL=${OSG_NOTIFY_LEVEL:-FATAL}
 cd "$OUT"
 unset OSG_FILE_PATH
 
-scenes=(default spheres poles cubes tree bunny dueling grazing elephant ring)
+scenes=(default spheres poles cubes tree bunny dueling grazing elephant ring foliage)
 variants=("shadowmap" "silhouette" "volume" "hybrid --hybrid-method lists" "hybrid --hybrid-method stencil")
 lights=("" "--light-pos 2 3 6")
 same=0 differ=0 failed=0

@@ -6,10 +6,12 @@
 // With OSS_DEBUG_MASK the pass writes the shadow mask of light oss_maskLight instead:
 // 1 where that light reaches the surface, 0 where it is blocked or the surface's geometric
 // normal faces away from it (the conventions of the exact reference). With OSS_DEBUG_CLASSES
-// it writes the class colours of that light (oss_classColor()).
+// it writes the class colours of that light (oss_classColor()). Both carry the alpha the
+// shading gives an alpha-tested receiver (OSS_ALPHA_TEST), so the scene's osg::AlphaFunc
+// cuts the mask where it cuts the picture.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
-#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS)
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS, OSS_ALPHA_TEST)
 // OSS_SKIPPED_SLOTS, bit s: slot s is a cube face with nothing to shadow (its newest build
 // drew no caster), left out: its term is 1 everywhere. The OSS_MAX_* and slot defines have
 // their defaults in the prelude (ShaderSource.cpp, shaderPrelude()).
@@ -71,6 +73,21 @@ int oss_shadowSlotOf(int light);
 vec2 oss_shadowSlotClass(int slot, vec4 eyePosition);
 vec4 oss_classColor(bool silhouette, bool lit);
 
+// The alpha the shading gives the fragment (1 unless the receiver is alpha-tested).
+float oss_shadedAlpha()
+{
+#ifdef OSS_ALPHA_TEST
+    vec3 shadowed[OSS_MAX_SHADOW_LIGHTS];
+    float alpha = oss_fragmentLighting(shadowed).a;
+#ifdef OSS_BASE_TEXTURE
+    alpha *= texture(oss_baseTexture, oss_texCoord0.st).a;
+#endif
+    return alpha;
+#else
+    return 1.0;
+#endif
+}
+
 void main()
 {
     int n = oss_lightIndex[clamp(oss_maskLight, 0, OSS_MAX_SCENE_LIGHTS - 1)];
@@ -78,10 +95,10 @@ void main()
 #ifdef OSS_DEBUG_CLASSES
     int slot = oss_shadowSlotOf(n);
     vec2 c = slot < 0 ? vec2(1.0, 0.0) : oss_shadowSlotClass(slot, oss_eyePosition);
-    gl_FragColor = oss_classColor(c.y > 0.5, facing && c.x >= 0.5);
+    gl_FragColor = vec4(oss_classColor(c.y > 0.5, facing && c.x >= 0.5).rgb, oss_shadedAlpha());
 #else
     float lit = facing ? step(0.5, oss_shadowTerm(n, oss_eyePosition)) : 0.0;
-    gl_FragColor = vec4(vec3(lit), 1.0);
+    gl_FragColor = vec4(vec3(lit), oss_shadedAlpha());
 #endif
 }
 #else

@@ -22,9 +22,12 @@
 // faces the light. With OSS_DEBUG_CLASSES they
 // write the class colours (oss_classColor()): black base, green where the volumes leave the
 // light, red / blue where HYBRID's shadow map answers lit / shadowed.
+// An alpha-tested receiver (OSS_ALPHA_TEST) writes, in every pass, the alpha its shading
+// gives it, so the scene's osg::AlphaFunc cuts each pass (and the masks) where it cuts the
+// base pass; a light pass adds its alpha too, to a destination alpha nothing reads.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK, OSS_HYBRID_EDGES)
-#pragma import_defines(OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK)
+#pragma import_defines(OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK, OSS_ALPHA_TEST)
 #ifndef OSS_LIGHT_NUM
 #define OSS_LIGHT_NUM 0
 #endif
@@ -77,6 +80,15 @@ vec4 oss_textured(vec4 color)
     return color;
 }
 
+// A pass's output, with the alpha of an alpha-tested receiver's shading (else `alpha`).
+vec4 oss_withAlpha(vec3 rgb, float alpha, vec4 unshadowedColor)
+{
+#ifdef OSS_ALPHA_TEST
+    alpha = oss_textured(unshadowedColor).a;
+#endif
+    return vec4(rgb, alpha);
+}
+
 void main()
 {
     vec3 oss_shadowedColor[OSS_MAX_SHADOW_LIGHTS];
@@ -89,30 +101,35 @@ void main()
 #endif
     if (!uncertain || !oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz))
         discard;
-    gl_FragColor = vec4(0.0);
+    gl_FragColor = oss_withAlpha(vec3(0.0), 0.0, oss_unshadowedColor);
 #elif defined(OSS_LIGHT_PASS)
     float visible = 1.0;
 #ifdef OSS_HYBRID_SHADOW_MAP
     visible = step(0.5, oss_lightPcf(OSS_LIGHT_PASS, oss_eyePosition));
 #endif
 #if defined(OSS_DEBUG_CLASSES) && defined(OSS_HYBRID_SHADOW_MAP)
-    gl_FragColor = oss_classColor(false, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) && visible > 0.5);
+    gl_FragColor = oss_withAlpha(oss_classColor(false, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) && visible > 0.5).rgb,
+                                 1.0, oss_unshadowedColor);
 #elif defined(OSS_DEBUG_CLASSES)
-    gl_FragColor = oss_classColor(true, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz));
+    gl_FragColor = oss_withAlpha(oss_classColor(true, oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz)).rgb, 1.0,
+                                 oss_unshadowedColor);
 #elif defined(OSS_DEBUG_MASK)
-    gl_FragColor = vec4(vec3(oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) ? visible : 0.0), 1.0);
+    gl_FragColor = oss_withAlpha(vec3(oss_facesLight(OSS_LIGHT_NUM, oss_eyePosition.xyz) ? visible : 0.0), 1.0,
+                                 oss_unshadowedColor);
 #elif defined(OSS_VISIBILITY_MARK)
     if (visible > 0.5)
         oss_markVisible(OSS_LIGHT_PASS);
     gl_FragColor = vec4(0.0); // colour writes are off
 #else
-    gl_FragColor = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0));
+    gl_FragColor = oss_withAlpha(oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0)).rgb, 0.0,
+                                 oss_unshadowedColor);
 #endif
 #else
 #if defined(OSS_DEBUG_MASK)
-    gl_FragColor = vec4(vec3(oss_unshadowedMask(oss_eyePosition.xyz)), 1.0); // a light pass may add the rest
+    gl_FragColor = oss_withAlpha(vec3(oss_unshadowedMask(oss_eyePosition.xyz)), 1.0,
+                                 oss_unshadowedColor); // a light pass may add the rest
 #elif defined(OSS_DEBUG_CLASSES)
-    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0); // shadowed until a light pass says otherwise
+    gl_FragColor = oss_withAlpha(vec3(0.0), 1.0, oss_unshadowedColor); // shadowed until a light pass says otherwise
 #else
 #ifdef OSS_VISIBILITY_CLEAR
     oss_clearVisibility();

@@ -3,10 +3,13 @@
 // them, with the lighting per pixel or per vertex (PerPixelLighting). (The stencil modes
 // light in additive passes, the map modes in one: both must be the fixed-function lighting
 // of the same surface.) And a spot light's lit disc on a ground of four vertices shows with
-// the lighting per pixel, not per vertex.
+// the lighting per pixel, not per vertex. An alpha-tested surface (a texture's alpha under
+// an osg::AlphaFunc) is lit alike in every mode too: the stencil modes' light passes keep
+// its alpha, so the scene's alpha test does not throw their light away.
 #include "GLTestSupport.h"
 #include "Meshes.h"
 
+#include <osg/AlphaFunc>
 #include <osg/Geode>
 #include <osg/Material>
 #include <osg/Texture2D>
@@ -26,19 +29,21 @@ enum class Look
     NOTHING,       ///< no material, no colours, no texture
     MATERIAL,      ///< an osg::Material of its own
     VERTEX_COLOURS,///< a colour array, no material
-    TEXTURE        ///< a texture on unit 0 (and texture coordinates), no material
+    TEXTURE,       ///< a texture on unit 0 (and texture coordinates), no material
+    ALPHA_TESTED   ///< the texture with alpha 0 on its dark squares, GL_ALPHA_TEST GREATER 0.5
 };
 
-osg::ref_ptr<osg::Texture2D> checker()
+osg::ref_ptr<osg::Texture2D> checker(bool alpha = false)
 {
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(8, 8, 1, GL_RGB, GL_UNSIGNED_BYTE);
+    image->allocateImage(8, 8, 1, alpha ? GL_RGBA : GL_RGB, GL_UNSIGNED_BYTE);
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
         {
             unsigned char* p = image->data(x, y);
             const bool dark = (x / 2 + y / 2) % 2;
             p[0] = dark ? 60 : 230, p[1] = dark ? 90 : 200, p[2] = dark ? 40 : 120;
+            if (alpha) p[3] = dark ? 0 : 255;
         }
     osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
     texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
@@ -77,6 +82,14 @@ void dress(osg::Geometry& g, Look look)
         for (unsigned int i = 0; i < n; ++i) uv->push_back(osg::Vec2(v[i].x() * 0.3f, v[i].y() * 0.3f + v[i].z() * 0.3f));
         g.setTexCoordArray(0, uv.get());
         g.getOrCreateStateSet()->setTextureAttributeAndModes(0, checker().get());
+        break;
+    }
+    case Look::ALPHA_TESTED:
+    {
+        dress(g, Look::TEXTURE);
+        osg::StateSet* ss = g.getOrCreateStateSet();
+        ss->setTextureAttributeAndModes(0, checker(true).get());
+        ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
         break;
     }
     }
@@ -202,13 +215,13 @@ TEST_P(ShadingParity, ShadowMapDarkensLitSlopesAtMostAsMeasured)
 
 std::string lookName(const ::testing::TestParamInfo<std::tuple<Look, bool>>& info)
 {
-    static const char* const names[] = {"Nothing", "Material", "VertexColours", "Texture"};
+    static const char* const names[] = {"Nothing", "Material", "VertexColours", "Texture", "AlphaTested"};
     return std::string(names[int(std::get<0>(info.param))]) + (std::get<1>(info.param) ? "_PerPixel" : "_PerVertex");
 }
 
 INSTANTIATE_TEST_SUITE_P(Looks, ShadingParity,
                          ::testing::Combine(::testing::Values(Look::NOTHING, Look::MATERIAL, Look::VERTEX_COLOURS,
-                                                              Look::TEXTURE),
+                                                              Look::TEXTURE, Look::ALPHA_TESTED),
                                             ::testing::Bool()),
                          lookName);
 
