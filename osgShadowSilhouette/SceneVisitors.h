@@ -137,10 +137,10 @@ private:
  *  the define is inherited exactly as the mode is), so the depth passes output the alpha an
  *  osg::AlphaFunc tests. Records the alpha-tested drawables (GL_ALPHA_TEST on along their
  *  path, as far as the StateSets on that path say) for the warning of the stencil modes. */
-class TagBaseTextureVisitor : public osg::NodeVisitor
+class TagShaderDefinesVisitor : public osg::NodeVisitor
 {
 public:
-    TagBaseTextureVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    TagShaderDefinesVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
     void apply(osg::Node& node) override
     {
         const AlphaTest saved = _alphaTest;

@@ -39,7 +39,7 @@ namespace {
 using detail::boundsOf;
 using detail::CasterSignatureVisitor;
 using detail::prunePrepass;
-using detail::TagBaseTextureVisitor;
+using detail::TagShaderDefinesVisitor;
 using detail::TraverseShadowedSceneCallback;
 
 constexpr unsigned int MAX_MAP_SIZE = 16384;
@@ -424,7 +424,7 @@ void SilhouetteShadowTechnique::init()
                               dynamic_cast<osg::StateSet*>(_silhouetteMapStateSet->getUserData())})
         if (ss) watchProgramLink(dynamic_cast<osg::Program*>(ss->getAttribute(osg::StateAttribute::PROGRAM)));
 
-    TagBaseTextureVisitor tagger;
+    TagShaderDefinesVisitor tagger;
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
     _alphaTested.assign(tagger.alphaTested.begin(), tagger.alphaTested.end());
 
@@ -465,29 +465,37 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet()
     return ss;
 }
 
-void SilhouetteShadowTechnique::warnAlphaTested(bool hybrid) const
+void SilhouetteShadowTechnique::warnAlphaTested(bool hybrid, bool lists) const
 {
     // One message per mode for the drawables not yet named in it: a forest of billboards is
     // hundreds of alpha-tested drawables.
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
     std::vector<std::string> names;
+    std::size_t count = 0, unnamed = 0;
     for (const osg::observer_ptr<osg::Drawable>& weak : _alphaTested)
     {
         osg::ref_ptr<osg::Drawable> drawable;
-        if (!weak.lock(drawable) || !_warnedAlphaTested.insert({hybrid, drawable.get()}).second) continue;
-        names.push_back(drawable->getName().empty() ? "(unnamed)" : "'" + drawable->getName() + "'");
+        const int variant = hybrid ? (lists ? 2 : 1) : 0;
+        if (!weak.lock(drawable) || !_warnedAlphaTested.insert({variant, drawable.get()}).second) continue;
+        ++count;
+        if (drawable->getName().empty())
+            ++unnamed;
+        else
+            names.push_back("'" + drawable->getName() + "'");
     }
-    if (names.empty()) return;
+    if (count == 0) return;
     constexpr std::size_t shown = 4;
     std::string list;
     for (std::size_t i = 0; i < names.size() && i < shown; ++i) list += (i ? ", " : "") + names[i];
-    if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
-    const bool one = names.size() == 1;
-    OSG_WARN << "osgShadowSilhouette: " << (hybrid ? "HYBRID" : "SHADOW_VOLUME") << ": " << names.size()
-             << (one ? " drawable is" : " drawables are") << " alpha-tested (GL_ALPHA_TEST): " << list << "; "
-             << (hybrid ? "the exact test at silhouette pixels takes their triangles as opaque, so light through "
-                          "their cut-outs is lost along the shadows' edges"
-                        : "stencil shadow volumes cannot cut their shapes out, so they cast their whole triangles")
+    if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more named";
+    if (unnamed > 0) list += (list.empty() ? "" : ", ") + std::to_string(unnamed) + " unnamed";
+    OSG_WARN << "osgShadowSilhouette: " << (hybrid ? "HYBRID" : "SHADOW_VOLUME") << ": " << count
+             << (count == 1 ? " drawable is" : " drawables are") << " alpha-tested (GL_ALPHA_TEST): " << list << "; "
+             << (!hybrid ? "stencil shadow volumes cannot cut their shapes out, so they cast their whole triangles"
+                 : lists  ? "where only their triangles stand between a silhouette pixel and the light, the triangle "
+                            "lists keep the shadow map's answer there, not an exact one"
+                          : "the stencil volumes of the exact test take their triangles as opaque, so light through "
+                            "their cut-outs is lost along the shadows' edges")
              << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
@@ -707,8 +715,6 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     ViewData& vd = *getViewData(cv);
     FrameContext frame;
     frame.mode = effectiveModeFor(cv);
-    if ((frame.mode == SHADOW_VOLUME || frame.mode == HYBRID) && !_alphaTested.empty())
-        warnAlphaTested(frame.mode == HYBRID);
     // The eye pass's configuration, filled in as the frame is planned and applied at the end.
     detail::EyePassPlan eye;
     eye.mode = frame.mode;
@@ -782,6 +788,8 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
                            TriangleListPass::blockHeadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot));
     eye.listBlockHeads = stats.listBlockHeads;
     stats.triangleLists = frame.triangleLists;
+    if ((frame.mode == SHADOW_VOLUME || frame.mode == HYBRID) && !_alphaTested.empty())
+        warnAlphaTested(frame.mode == HYBRID, frame.triangleLists);
     const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
     // Statistics of HYBRID's lists: the fragments resolved exactly, counted in the eye pass.
     const bool countExact = frame.triangleLists && _stats.valid();

@@ -11,8 +11,10 @@
 // any triangle reached the map, listed or not (the technique keeps the slot in the eye pass
 // then), [3] unused; G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity
 // (even) nodes of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
-// (x2 y2 q0 q1) (q2 0 0 0) with q = z for an orthographic light, -1/w for a perspective one
-// (both grow away from the light and are linear in texture-space x, y).
+// (x2 y2 q0 q1) (q2 cut 0 0) with q = z for an orthographic light, -1/w for a perspective one
+// (both grow away from the light and are linear in texture-space x, y); cut is 1 for an
+// alpha-tested caster's triangle (OSS_ALPHA_TEST): its texture's cut-outs are in the depth
+// map, not in the list, so a point it covers keeps the map's answer (oss_listWalk()).
 //
 // A triangle that cannot stand between the light and any receiver (every corner of the
 // receivers' world box lies on the light's side of its plane, or within oss_listReceiverSlack
@@ -25,6 +27,8 @@
 // it through one of them, whether it starts outside (it also crossed a face turned away)
 // or inside (a room around the receiver). The lists are about half as long. Mirrored draws
 // of closed casters list both sides (the technique does not mark them).
+
+#pragma import_defines(OSS_ALPHA_TEST)
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
@@ -103,7 +107,11 @@ void main()
     oss_list[base + 6u] = floatBitsToUint(ortho ? t0.z : -1.0 / c0.w);
     oss_list[base + 7u] = floatBitsToUint(ortho ? t1.z : -1.0 / c1.w);
     oss_list[base + 8u] = floatBitsToUint(ortho ? t2.z : -1.0 / c2.w);
+#ifdef OSS_ALPHA_TEST
+    oss_list[base + 9u] = 1u;
+#else
     oss_list[base + 9u] = 0u;
+#endif
     oss_list[base + 10u] = 0u;
     oss_list[base + 11u] = 0u;
 

@@ -143,7 +143,9 @@ uint oss_listHead(int s, vec2 p, uint grid, out uint count)
     return inside ? head : 0u;
 }
 
-// 1 lit, 0 shadowed, -1 when the lists overflowed this frame (then the caller falls back).
+// 1 lit, 0 shadowed, -1 when the lists cannot say (then the caller falls back to the PCF):
+// they overflowed this frame, or the only triangles between the point and the light are
+// alpha-tested ones (their cut-outs are in the depth map, not in the lists).
 // Written as data flow, not early returns: SIMD rasterizers (llvmpipe) run a loop as long as
 // any lane of the block needs it, so a lane that does not walk must have a count of 0. The
 // buffer is read only by the lanes that walk (the loads sit behind the branch).
@@ -168,6 +170,7 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
     uint nodes = (4u + 2u * grid * grid) / 4u;    // in vec4s: two nodes each
     uint triangles = nodes + capacity.x / 2u;
     float lit = 1.0;
+    bool cutOnly = false;
     for (uint steps = 0u; steps < count && node != 0u && node <= capacity.x; ++steps)
     {
         uint n = node - 1u;
@@ -176,18 +179,21 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
         node = entry.y;
         uint b = triangles + 3u * entry.x;
         vec4 a = uintBitsToFloat(oss_listData4(s, b)), c = uintBitsToFloat(oss_listData4(s, b + 1u));
-        float q2 = uintBitsToFloat(oss_listData4(s, b + 2u).x);
+        uvec4 third = oss_listData4(s, b + 2u);
+        float q2 = uintBitsToFloat(third.x);
         vec2 e1 = a.zw - a.xy, e2 = c.xy - a.xy, d = p - a.xy;
         float det = e1.x * e2.y - e1.y * e2.x;
         float u = (d.x * e2.y - d.y * e2.x) / det, v = (e1.x * d.y - e1.y * d.x) / det;
         float qt = c.z + u * (c.w - c.z) + v * (q2 - c.z);
-        if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && qt < limit)
+        bool hit = u >= 0.0 && v >= 0.0 && u + v <= 1.0 && qt < limit;
+        cutOnly = cutOnly || (hit && third.y != 0u);
+        if (hit && third.y == 0u)
         {
             lit = 0.0;
             break;
         }
     }
-    return overflow ? -1.0 : lit;
+    return overflow || (cutOnly && lit > 0.0) ? -1.0 : lit;
 }
 
 #ifdef OSS_HYBRID_EDGES

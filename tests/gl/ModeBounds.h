@@ -56,10 +56,11 @@ constexpr ModeBounds DEEP_DEPTH_RANGE{0.15, 0.05, 0.01, 0.03};
 /** Alpha-tested casters (tests/gl/test_alpha_tested.cpp, the "foliage" scene, 512x384, a
  *  2048 map): the cut-out outlines come from the depth map only. SILHOUETTE_MAP's edges are
  *  the triangles' borders, not the cut-out's, so it is the depth map there (measured 0.050%,
- *  SHADOW_MAP 0.046%); HYBRID's exact test takes the cut-out triangles as opaque at the
- *  silhouette pixels of their shadows (measured 0.13% sun, 0.21% point light); SHADOW_VOLUME
- *  casts the whole triangles (its own check in that test). */
-constexpr ModeBounds ALPHA_TESTED{0.15, 0.07, 0.3, 0.01};
+ *  SHADOW_MAP 0.046%); HYBRID's triangle lists keep the map's answer where only cut-out
+ *  triangles cover a point (measured 0.043% sun, 0.039% point light; 0.13% and 0.21% when
+ *  they took them as opaque); HYBRID's stencil volumes and SHADOW_VOLUME have checks of
+ *  their own in that test. */
+constexpr ModeBounds ALPHA_TESTED{0.15, 0.07, 0.06, 0.01};
 
 } // namespace bounds
 

@@ -4,8 +4,9 @@
 // agrees, for primary rays (what the eye sees through the holes) and shadow rays alike.
 // Scene: the built-in "foliage" (a fence panel with diamond holes, two crossed cards of
 // leaves, an opaque box), 512x384. Stencil volumes cannot cut a shape out: SHADOW_VOLUME
-// warns once per such drawable and casts the whole triangles; HYBRID warns that its exact
-// test takes them as opaque (bounds and measurements: ModeBounds.h, ALPHA_TESTED).
+// warns, naming them, and casts the whole triangles. HYBRID's triangle lists keep the depth
+// map's answer where only cut-out triangles cover a point; its stencil volumes take them as
+// opaque; it warns either way (bounds and measurements: ModeBounds.h, ALPHA_TESTED).
 #include "GLTestSupport.h"
 #include "ModeBounds.h"
 #include "NotifyCapture.h"
@@ -21,7 +22,8 @@ struct CutoutCase
 {
     const char* name;
     const char* mode;
-    bool point; ///< a point light above the casters instead of the scene's sun
+    bool point;          ///< a point light above the casters instead of the scene's sun
+    bool stencil = false; ///< HYBRID by its stencil volumes instead of its triangle lists
 };
 
 constexpr unsigned int MAP_SIZE = 2048;
@@ -66,6 +68,7 @@ TEST_P(AlphaTested, CastsTheCutOutShape)
     osstest::NotifyCapture capture;
     ShadowedRender r(optionsFor(c), c.mode, MAP_SIZE, 512, 384);
     ASSERT_TRUE(r.valid());
+    if (c.stencil) r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
     const ossref::Mask mask = r.mask(0, 3);
     const ossref::Mask reference = r.reference();
     const ossref::Comparison score = ossref::compareMasks(mask, reference);
@@ -83,18 +86,26 @@ TEST_P(AlphaTested, CastsTheCutOutShape)
         EXPECT_GT(score.wrongPct, 1.5) << "SHADOW_VOLUME now cuts the shapes out: bound it by its claim";
         EXPECT_LT(score.wrongPct, 3.0);
     }
+    else if (c.stencil)
+    {
+        // Known limitation, warned about: HYBRID's stencil volumes take the cut-out triangles
+        // as opaque at the silhouette pixels of their shadows (measured 0.127%); the shadow
+        // map cuts them everywhere else (1.5% and more when it does not either).
+        EXPECT_LT(score.wrongPct, 0.2) << c.name << ": " << score.wrongPixels << " wrong pixels";
+    }
     else
     {
         EXPECT_LT(score.wrongPct, osstest::bounds::ALPHA_TESTED.of(c.mode))
             << c.name << ": " << score.wrongPixels << " wrong pixels";
     }
 
-    const bool stencil = std::string(c.mode) == "volume" || std::string(c.mode) == "hybrid";
-    // One warning names the three cut-out drawables, once however many frames are drawn.
+    // SHADOW_VOLUME and HYBRID name the three cut-out drawables in one warning, once however
+    // many frames are drawn; the map modes cut them and say nothing.
+    const bool warns = std::string(c.mode) == "volume" || std::string(c.mode) == "hybrid";
     EXPECT_EQ(capture.count("3 drawables are alpha-tested (GL_ALPHA_TEST): 'fence', 'leaves 1', 'leaves 2';"),
-              stencil ? 1 : 0)
+              warns ? 1 : 0)
         << capture.warnings();
-    EXPECT_EQ(capture.count("alpha-tested"), stencil ? 1 : 0) << capture.warnings();
+    EXPECT_EQ(capture.count("alpha-tested"), warns ? 1 : 0) << capture.warnings();
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -102,5 +113,6 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(CutoutCase{"shadowmap_sun", "shadowmap", false}, CutoutCase{"shadowmap_point", "shadowmap", true},
                       CutoutCase{"silhouette_sun", "silhouette", false},
                       CutoutCase{"silhouette_point", "silhouette", true}, CutoutCase{"hybrid_sun", "hybrid", false},
-                      CutoutCase{"hybrid_point", "hybrid", true}, CutoutCase{"volume_sun", "volume", false}),
+                      CutoutCase{"hybrid_point", "hybrid", true}, CutoutCase{"hybrid_stencil_sun", "hybrid", false, true},
+                      CutoutCase{"volume_sun", "volume", false}),
     [](const ::testing::TestParamInfo<CutoutCase>& info) { return std::string(info.param.name); });
