@@ -1,12 +1,21 @@
 #include <osgShadowSilhouette/CasterEdges>
 
 #include <osg/Camera>
+#include <osg/Depth>
 #include <osg/Transform>
 
 namespace osgShadowSilhouette {
 
 // ---------------------------------------------------------------------------------------
 // CasterCollector
+
+bool seeThrough(const osg::StateSet& ss)
+{
+    if (ss.getRenderingHint() == osg::StateSet::TRANSPARENT_BIN) return true;
+    if (ss.useRenderBinDetails() && (ss.getBinNumber() > 0 || ss.getBinName() == "DepthSortedBin")) return true;
+    const auto* depth = dynamic_cast<const osg::Depth*>(ss.getAttribute(osg::StateAttribute::DEPTH));
+    return depth && !depth->getWriteMask();
+}
 
 CasterCollector::CasterCollector(MeshCache& cache, unsigned int traversalMask, const ViewPoint& view)
     : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _cache(cache), _view(view)
@@ -59,6 +68,9 @@ void CasterCollector::apply(osg::Geometry& geometry)
     caster.closed = mesh->getAdjacency().isClosedOutward();
     caster.mesh = mesh;
     caster.world = _matrices.back();
+    for (const osg::Node* node : getNodePath())
+        if (node->getStateSet() && seeThrough(*node->getStateSet())) caster.seeThrough = true;
+    if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
     _casters.push_back(caster);
 }
 

@@ -47,6 +47,37 @@ bool prepassDraws(const osgUtil::StateGraph* sg, const osg::StateSet* prepass, c
 
 } // namespace
 
+bool holdsLeaves(osgUtil::RenderBin& bin)
+{
+    if (!bin.getRenderLeafList().empty()) return true;
+    for (const osgUtil::StateGraph* graph : bin.getStateGraphList())
+        if (!graph->_leaves.empty()) return true;
+    for (auto& nested : bin.getRenderBinList())
+        if (holdsLeaves(*nested.second)) return true;
+    return false;
+}
+
+int lastBinWithLeaves(osgUtil::RenderBin& bin, int after)
+{
+    int last = after;
+    for (auto& nested : bin.getRenderBinList())
+        if (nested.first > after && holdsLeaves(*nested.second)) last = std::max(last, nested.first);
+    return last;
+}
+
+void keepByBin(osgUtil::RenderBin& bin, int after, bool keepLate)
+{
+    osgUtil::RenderBin::RenderBinList& nested = bin.getRenderBinList();
+    for (auto it = nested.begin(); it != nested.end();)
+    {
+        if ((it->first > after) != keepLate)
+            it = nested.erase(it);
+        else
+            ++it;
+    }
+    if (keepLate) bin.getStateGraphList().clear();
+}
+
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
 void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables)
 {

@@ -49,6 +49,18 @@ void forEachLeaf(osgUtil::RenderBin& bin, const Visit& visit)
     for (auto& nested : bin.getRenderBinList()) forEachLeaf(*nested.second, visit);
 }
 
+/** Whether @p bin or a bin nested in it holds a leaf. */
+bool holdsLeaves(osgUtil::RenderBin& bin);
+
+/** The highest number of the bins nested in @p bin, above @p after, that hold leaves, or
+ *  @p after when there is none. */
+int lastBinWithLeaves(osgUtil::RenderBin& bin, int after);
+
+/** Splits a pass's bin by where the base pass draws its leaves: keepLate keeps only the
+ *  leaves of its nested bins numbered above @p after (drawn after that bin: transparent,
+ *  depth sorted or later), !keepLate only the others. */
+void keepByBin(osgUtil::RenderBin& bin, int after, bool keepLate);
+
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
 void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables);
 

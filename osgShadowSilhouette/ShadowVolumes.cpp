@@ -1,5 +1,7 @@
 #include <osgShadowSilhouette/ShadowVolumes>
+
 #include "GLConstants.h"
+#include "RenderLeaves.h"
 #include <osgShadowSilhouette/ShaderConstants>
 
 #include <osg/BlendFunc>
@@ -224,7 +226,11 @@ unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const
     for (std::size_t i = 0; i < casters.size(); ++i)
     {
         Entry& e = _entries[i];
-        if (!lightChanged && e.zfail && e.caster == casters[i]) continue;
+        if (!lightChanged && e.zfail && e.caster == casters[i])
+        {
+            e.caster.seeThrough = casters[i].seeThrough; // how it is drawn, not its volume
+            continue;
+        }
         e.caster = casters[i];
         rebuild(e, light);
         ++rebuilt;
@@ -258,12 +264,22 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
             ++_culled;
             continue;
         }
-        const bool zfail = needsZFail(e.worldBound, _light, eye, nearRadius);
+        // z-pass counts from the eye, and takes a view ray that meets the caster for one
+        // that ends on it: true only of a caster whose surface is in the depth buffer.
+        const bool zfail = e.caster.seeThrough || needsZFail(e.worldBound, _light, eye, nearRadius);
         e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
         ++(zfail ? _zfail : _zpass);
     }
     const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
     cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
+    _root->accept(cv);
+    cv.setComputeNearFarMode(mode);
+}
+
+void ShadowVolumeGroup::cullAgain(osgUtil::CullVisitor& cv)
+{
+    const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
+    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     _root->accept(cv);
     cv.setComputeNearFarMode(mode);
 }
@@ -381,6 +397,7 @@ namespace {
 constexpr unsigned int MASK_BIT = 0x80;   // HYBRID: silhouette pixel
 constexpr unsigned int COUNT_BITS = 0x7f; // HYBRID: the volumes' count
 constexpr int OUTER_BIN = 5;              // after the opaque bin (0), before transparent (10)
+constexpr int BLENDED_MIN_BIN = 11;       // the blended round: after transparent (10) at least
 constexpr int BINS_PER_LIGHT = 10;
 // Screen-space visibility's final pass: after every light's bins (slots < 64).
 constexpr int FINAL_BIN = 1 + BINS_PER_LIGHT * 64;
@@ -407,8 +424,9 @@ osg::ref_ptr<osg::StateSet> passState(int bin, osg::Program* program)
     return ss;
 }
 
-/** Stencil test (func ref mask), no stencil writes, and blending that adds the pass. */
-void addLightState(osg::StateSet& ss, unsigned int ref, unsigned int mask, bool additive)
+/** Stencil test (func ref mask), no stencil writes, and blending that adds the pass (alpha
+ *  times the pass where `blended`: the blended round's receivers). */
+void addLightState(osg::StateSet& ss, unsigned int ref, unsigned int mask, bool additive, bool blended)
 {
     const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
     osg::ref_ptr<osg::Stencil> stencil = new osg::Stencil;
@@ -418,7 +436,7 @@ void addLightState(osg::StateSet& ss, unsigned int ref, unsigned int mask, bool 
     ss.setAttributeAndModes(stencil.get(), on);
     ss.setAttribute(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false), on);
     if (additive)
-        ss.setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), on);
+        ss.setAttributeAndModes(new osg::BlendFunc(blended ? GL_SRC_ALPHA : GL_ONE, GL_ONE), on);
     else
         ss.setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
 }
@@ -465,6 +483,15 @@ StencilShadowPasses::StencilShadowPasses(osg::Program* lighting, osg::Program* v
     _base->setAttributeAndModes(lighting, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     _outer = new osg::StateSet;
     _outer->setRenderBinDetails(OUTER_BIN, "RenderBin");
+    _blendedOuter = new osg::StateSet;
+    _blendedOuter->setRenderBinDetails(BLENDED_MIN_BIN, "RenderBin");
+    // The nearest blended layer's depth, where the volumes count and the light passes meet
+    // (a blended surface often writes none of its own).
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    _blendedDepth = passState(0, lighting);
+    _blendedDepth->setAttribute(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, true), on);
+    _blendedDepth->setAttribute(new osg::ColorMask(false, false, false, false), on);
+    _blendedDepth->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
 }
 
 StencilShadowPasses::~StencilShadowPasses() = default;
@@ -476,6 +503,8 @@ void StencilShadowPasses::forEachHolder(const Apply& apply) const
     apply(_volume.get());
     apply(_base.get());
     apply(_outer.get());
+    apply(_blendedOuter.get());
+    apply(_blendedDepth.get());
     apply(_barrier.get());
     apply(_finalPass.get());
     apply(_finalBarrierState.get());
@@ -487,7 +516,8 @@ void StencilShadowPasses::forEachHolder(const Apply& apply) const
         apply(s.volumeCounter.get());
         for (osg::Node* node : {s.maskBegin.get(), s.maskEnd.get(), s.volumeBegin.get(), s.volumeEnd.get()}) apply(node);
         for (osg::StateSet* ss : {s.clearState.get(), s.maskState.get(), s.volumeState.get(), s.litState.get(),
-                                  s.litShadowMapState.get()})
+                                  s.litShadowMapState.get(), s.blendedClearState.get(), s.blendedMaskState.get(),
+                                  s.blendedVolumeState.get(), s.blendedLitState.get(), s.blendedLitShadowMapState.get()})
             apply(ss);
     }
 }
@@ -515,22 +545,26 @@ void StencilShadowPasses::build(Slot& s) const
     s.faceSlots = 0; // new pass states: slotFor() names the light's slots
     s.volumeState = createVolumeStateSet(_volume.get());
     s.volumeState->setRenderBinDetails(bin + BIN_VOLUMES, "RenderBin");
+    s.blendedClearState = passState(bin + BIN_CLEAR, nullptr);
+    s.blendedVolumeState = new osg::StateSet(*s.volumeState, osg::CopyOp::SHALLOW_COPY);
     s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
     s.volumeCounter = new GpuCounter(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     s.volumeBegin = s.volumeCounter->createBeginNode(bin + BIN_VOLUME_BEGIN);
     s.volumeEnd = s.volumeCounter->createEndNode(bin + BIN_VOLUME_END);
 
     // A light pass: the receivers where the stencil holds ref under readMask.
-    const auto lightPass = [&](int binOffset, unsigned int ref, unsigned int readMask) {
+    const auto lightPass = [&](int binOffset, unsigned int ref, unsigned int readMask, bool blended) {
         osg::ref_ptr<osg::StateSet> ss = passState(bin + binOffset, _lighting.get());
         ss->setDefine("OSS_LIGHT_PASS", slot);
         ss->setDefine("OSS_LIGHT_NUM", light);
-        addLightState(*ss, ref, readMask, !s.mask);
+        if (blended) ss->setDefine(shader::DEFINE_BLENDED_PASS);
+        addLightState(*ss, ref, readMask, !s.mask, blended);
         if (s.mark) addMarkState(*ss);
         return ss;
     };
     // Count 0 is lit; HYBRID: only at silhouette pixels (mask bit set, count 0).
-    s.litState = lightPass(BIN_LIT, s.hybrid ? MASK_BIT : 0u, 0xffu);
+    s.litState = lightPass(BIN_LIT, s.hybrid ? MASK_BIT : 0u, 0xffu, false);
+    s.blendedLitState = lightPass(BIN_LIT, s.hybrid ? MASK_BIT : 0u, 0xffu, true);
     if (!s.hybrid) return;
 
     s.maskCounter = new GpuCounter(GL_SAMPLES_PASSED);
@@ -540,9 +574,12 @@ void StencilShadowPasses::build(Slot& s) const
     s.maskState->setDefine("OSS_HYBRID_MASK", slot);
     s.maskState->setDefine("OSS_LIGHT_NUM", light);
     addMaskState(*s.maskState);
+    s.blendedMaskState = new osg::StateSet(*s.maskState, osg::CopyOp::SHALLOW_COPY);
     // The other pixels (mask bit clear): the shadow map's answer.
-    s.litShadowMapState = lightPass(BIN_LIT_SHADOW_MAP, 0u, MASK_BIT);
+    s.litShadowMapState = lightPass(BIN_LIT_SHADOW_MAP, 0u, MASK_BIT, false);
     s.litShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
+    s.blendedLitShadowMapState = lightPass(BIN_LIT_SHADOW_MAP, 0u, MASK_BIT, true);
+    s.blendedLitShadowMapState->setDefine("OSS_HYBRID_SHADOW_MAP");
 }
 
 void StencilShadowPasses::setScreenVisibility(osg::Node* barrier, osg::StateSet* finalPass)
@@ -578,7 +615,9 @@ StencilShadowPasses::Slot& StencilShadowPasses::slotFor(const StencilLight& ligh
         s.faceSlots = light.faceSlots;
         const std::string faces = std::to_string(light.faceSlots);
         s.maskState->setDefine("OSS_LIGHT_FACES", faces);
+        s.blendedMaskState->setDefine("OSS_LIGHT_FACES", faces);
         s.litShadowMapState->setDefine("OSS_LIGHT_FACES", faces);
+        s.blendedLitShadowMapState->setDefine("OSS_LIGHT_FACES", faces);
     }
     return s;
 }
@@ -597,10 +636,21 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     const double nearRadius = nearPlaneRadius(cv);
     const bool mask = maskSlot >= 0;
     const bool mark = _finalPass && !mask;
+    // Receivers the base pass draws after the light passes (see cull() in the header).
+    const int lastLate = detail::lastBinWithLeaves(*cv.getCurrentRenderBin(), OUTER_BIN);
     cv.pushStateSet(_outer.get());
+    osgUtil::RenderBin* outer = cv.getCurrentRenderBin();
+    // A light's receiver pass, without the receivers of the blended round.
+    const auto opaquePass = [&](osg::StateSet* pass) {
+        cullReceivers(pass);
+        auto bin = outer->getRenderBinList().find(pass->getBinNumber());
+        if (bin != outer->getRenderBinList().end()) detail::keepByBin(*bin->second, OUTER_BIN, false);
+    };
+    std::vector<StencilLight> culled; // the lights of this cull, for the blended round
     for (const StencilLight& light : lights)
     {
         if (mask && int(light.slot) != maskSlot) continue;
+        culled.push_back(light);
         Slot& s = slotFor(light, hybrid, mask, mark);
         cv.pushStateSet(s.clearState.get());
         s.clear->accept(cv);
@@ -610,7 +660,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         if (s.hybrid)
         {
             s.maskBegin->accept(cv);
-            cullReceivers(s.maskState.get());
+            opaquePass(s.maskState.get());
             s.maskEnd->accept(cv);
             add(_silhouettePixels, s.maskCounter->getLastValue());
         }
@@ -630,8 +680,8 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         _zpass += s.volumes->getZPassCount();
         _culled += s.volumes->getCulledCount();
 
-        cullReceivers(s.litState.get());
-        if (s.hybrid) cullReceivers(s.litShadowMapState.get());
+        opaquePass(s.litState.get());
+        if (s.hybrid) opaquePass(s.litShadowMapState.get());
     }
     if (mark)
     {
@@ -639,6 +689,51 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         _barrier->accept(cv);
         cv.popStateSet();
         cullReceivers(_finalPass.get());
+    }
+    cv.popStateSet();
+    _blendedRound = false;
+    _blendedSkipped = lastLate > OUTER_BIN && mark;
+    if (lastLate > OUTER_BIN && !mark)
+        cullBlended(cv, std::max(BLENDED_MIN_BIN, lastLate + 1), culled, cullReceivers);
+}
+
+void StencilShadowPasses::cullBlended(osgUtil::CullVisitor& cv, int outerBin, const std::vector<StencilLight>& lights,
+                                      const CullReceivers& cullReceivers)
+{
+    if (_blendedOuter->getBinNumber() != outerBin) _blendedOuter->setRenderBinDetails(outerBin, "RenderBin");
+    cv.pushStateSet(_blendedOuter.get());
+    osgUtil::RenderBin* outer = cv.getCurrentRenderBin();
+    // A pass over the blended receivers alone; false when there is none.
+    const auto blendedPass = [&](osg::StateSet* pass) {
+        cullReceivers(pass);
+        auto bin = outer->getRenderBinList().find(pass->getBinNumber());
+        if (bin == outer->getRenderBinList().end()) return false;
+        detail::keepByBin(*bin->second, OUTER_BIN, true);
+        if (detail::holdsLeaves(*bin->second)) return true;
+        outer->getRenderBinList().erase(bin);
+        return false;
+    };
+    if (blendedPass(_blendedDepth.get()))
+    {
+        _blendedRound = true;
+        // In slot order: a light pass fills what the slots before it left (oss_stencil.frag).
+        std::vector<StencilLight> bySlot = lights;
+        std::sort(bySlot.begin(), bySlot.end(),
+                  [](const StencilLight& a, const StencilLight& b) { return a.slot < b.slot; });
+        for (const StencilLight& light : bySlot)
+        {
+            if (light.slot >= _slots.size() || !_slots[light.slot].volumes) continue;
+            Slot& s = _slots[light.slot];
+            cv.pushStateSet(s.blendedClearState.get());
+            s.clear->accept(cv);
+            cv.popStateSet();
+            if (s.hybrid) blendedPass(s.blendedMaskState.get());
+            cv.pushStateSet(s.blendedVolumeState.get());
+            s.volumes->cullAgain(cv);
+            cv.popStateSet();
+            blendedPass(s.blendedLitState.get());
+            if (s.hybrid) blendedPass(s.blendedLitShadowMapState.get());
+        }
     }
     cv.popStateSet();
 }

@@ -83,6 +83,7 @@ enum WarningKey
     WARN_LIGHT_NUM,
     WARN_DEBUG_LIGHT,
     WARN_SCREEN_VISIBILITY,
+    WARN_BLENDED_VISIBILITY,
 };
 
 osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
@@ -458,6 +459,10 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet()
     ss->setAttributeAndModes(new osg::PolygonOffset(getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits),
                              overrideOn); // each pass sets its mode's factor (cullLightPasses)
     ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
+    // A caster's own osg::Depth (a blended pane that writes no depth, a decal's ALWAYS)
+    // is the eye's business: every caster writes its depth into the map, as the reference
+    // and the volumes take every triangle as opaque.
+    ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), overrideOn);
     ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE); // open casters too
     ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
@@ -1297,6 +1302,13 @@ void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, View
     stats.zpassCasters = vd.stencil->getZPassCasters();
     stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
     stats.volumesCulled = vd.stencil->getVolumesCulled();
+    stats.blendedRound = vd.stencil->getBlendedRound();
+    if (vd.stencil->getBlendedSkipped())
+        warnOnce(WARN_BLENDED_VISIBILITY,
+                 std::string("Mode ") + modeName(_mode) +
+                     ": receivers in the transparent bin (or a later one) get no shadow of their own while a "
+                     "program given to addShadowShaders() draws the receivers: the screen-space visibility has "
+                     "no blended round yet; they show the opaque surface's shadow behind them");
     stats.silhouettePixels = hybrid ? vd.stencil->getSilhouettePixels() : -1;
     stats.volumeFragments = vd.stencil->getVolumeFragments();
     stats.blockersTested = vd.stencil->getBlockersTested();

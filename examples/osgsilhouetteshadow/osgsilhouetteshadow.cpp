@@ -165,9 +165,9 @@ int main(int argc, char** argv)
                     s.viewportPixels, s.silhouettePixels, s.volumeFragments, s.volumeOverdraw(), s.blockersTested,
                     s.blockersSkipped, s.triangleLists ? 1 : 0, s.listImages ? 1 : 0);
         std::printf("depth_passes_reused=%u silhouette_passes_reused=%u lights_skipped=%u volumes_culled=%u "
-                    "depth_prepass=%d list_block_heads=%d slots_skipped=%u\n",
+                    "depth_prepass=%d list_block_heads=%d slots_skipped=%u blended_round=%d\n",
                     s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled,
-                    s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0, s.slotsSkipped);
+                    s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0, s.slotsSkipped, s.blendedRound ? 1 : 0);
     }
 
     if (!options.classes.empty() && technique)

@@ -25,9 +25,12 @@
 // An alpha-tested receiver (OSS_ALPHA_TEST) writes, in every pass, the alpha its shading
 // gives it, so the scene's osg::AlphaFunc cuts each pass (and the masks) where it cuts the
 // base pass; a light pass adds its alpha too, to a destination alpha nothing reads.
+// OSS_BLENDED_PASS: a light pass of the blended round (receivers drawn after the opaque
+// bins): it writes the surface's alpha too, which its blending (GL_SRC_ALPHA, GL_ONE) scales
+// the light by, as the receiver's own blending scales its base pass.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_LIGHT_PASS, OSS_LIGHT_NUM, OSS_HYBRID_SHADOW_MAP, OSS_HYBRID_MASK, OSS_HYBRID_EDGES)
-#pragma import_defines(OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK, OSS_ALPHA_TEST)
+#pragma import_defines(OSS_VISIBILITY_CLEAR, OSS_VISIBILITY_MARK, OSS_ALPHA_TEST, OSS_BLENDED_PASS)
 #ifndef OSS_LIGHT_NUM
 #define OSS_LIGHT_NUM 0
 #endif
@@ -80,10 +83,10 @@ vec4 oss_textured(vec4 color)
     return color;
 }
 
-// A pass's output, with the alpha of an alpha-tested receiver's shading (else `alpha`).
+// A pass's output, with the alpha of an alpha-tested or blended receiver's shading (else `alpha`).
 vec4 oss_withAlpha(vec3 rgb, float alpha, vec4 unshadowedColor)
 {
-#ifdef OSS_ALPHA_TEST
+#if defined(OSS_ALPHA_TEST) || defined(OSS_BLENDED_PASS)
     alpha = oss_textured(unshadowedColor).a;
 #endif
     return vec4(rgb, alpha);
@@ -121,8 +124,18 @@ void main()
         oss_markVisible(OSS_LIGHT_PASS);
     gl_FragColor = vec4(0.0); // colour writes are off
 #else
-    gl_FragColor = oss_withAlpha(oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0)).rgb, 0.0,
-                                 oss_unshadowedColor);
+    vec3 light = oss_textured(vec4(visible * oss_shadowedColor[OSS_LIGHT_PASS], 0.0)).rgb;
+#ifdef OSS_BLENDED_PASS
+    // The map modes clamp the whole shading once, before blending; blended passes would
+    // each be clamped on their own. The light fills what the base pass and the lights of
+    // the slots before it (whose passes come first) left below 1: exact where those are
+    // lit, darker than the map modes only where one of them is shadowed and the sum saturates.
+    vec3 below = oss_unshadowedColor.rgb;
+    for (int s = 0; s < OSS_LIGHT_PASS; ++s)
+        below += oss_shadowedColor[s];
+    light = min(light, max(vec3(1.0) - oss_textured(vec4(below, 0.0)).rgb, vec3(0.0)));
+#endif
+    gl_FragColor = oss_withAlpha(light, 0.0, oss_unshadowedColor);
 #endif
 #else
 #if defined(OSS_DEBUG_MASK)

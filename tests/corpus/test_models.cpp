@@ -39,6 +39,7 @@ const Model kModels[] = {
     {"SphereWithHole", "STL/sphereWithHole.stl", "a closed sphere with a hole (9 open edges)"},
     {"Regression3429812", "OBJ/regr_3429812.obj", "4 triangles: a non-manifold edge, every edge flipped"},
     {"Hierarchy", "LWO/LWO2/hierarchy.lwo", "4 parts in a hierarchy of layers"},
+    {"Transparency", "LWO/LWO2/transparency.lwo", "2 blended parts (the transparent bin)"},
 };
 
 struct Mode

@@ -4,6 +4,7 @@
 
 #include "Meshes.h"
 
+#include <osg/Depth>
 #include <osg/Geode>
 #include <osg/MatrixTransform>
 
@@ -89,4 +90,46 @@ TEST(ShadowVolumeGroup, RebuildsOnlyWhatChanged)
     EXPECT_EQ(volumes->update(casters, osg::Vec4d(0.2, 0, 1, 0)), 2u) << "a new light rebuilds all";
     EXPECT_EQ(volumes->getCasterCount(), 2u);
     EXPECT_EQ(volumes->getRoot()->getNumChildren(), 2u);
+}
+
+// A caster drawn so that what lies behind it shows through (blended in the transparent bin,
+// a later or depth-sorted bin, no depth writes) is marked, from any state set on its path
+// or its own; its volume then takes z-fail whatever needsZFail() says.
+TEST(SeeThrough, FromTheStateOnTheCastersPath)
+{
+    const auto state = [] { return osg::ref_ptr<osg::StateSet>(new osg::StateSet); };
+    EXPECT_FALSE(seeThrough(*state()));
+    osg::ref_ptr<osg::StateSet> transparent = state(), earlyBin = state(), lateBin = state(), sorted = state();
+    transparent->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+    EXPECT_TRUE(seeThrough(*transparent));
+    earlyBin->setRenderBinDetails(-1, "RenderBin");
+    lateBin->setRenderBinDetails(3, "RenderBin");
+    sorted->setRenderBinDetails(0, "DepthSortedBin");
+    EXPECT_FALSE(seeThrough(*earlyBin)) << "drawn before the opaque bin: in the depth buffer";
+    EXPECT_TRUE(seeThrough(*lateBin));
+    EXPECT_TRUE(seeThrough(*sorted));
+    osg::ref_ptr<osg::StateSet> noWrites = state(), writes = state();
+    noWrites->setAttribute(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, false));
+    writes->setAttribute(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, true));
+    EXPECT_TRUE(seeThrough(*noWrites));
+    EXPECT_FALSE(seeThrough(*writes));
+
+    osg::ref_ptr<osg::Group> scene = new osg::Group;
+    osg::ref_ptr<osg::Group> glass = new osg::Group;
+    glass->getOrCreateStateSet()->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+    osg::ref_ptr<osg::Geode> pane = new osg::Geode, box = new osg::Geode;
+    pane->addDrawable(osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1)).get());
+    osg::ref_ptr<osg::Geometry> own = osshar::makeBox(osg::Vec3(3, 0, 1), osg::Vec3(1, 1, 1));
+    own->getOrCreateStateSet()->setAttribute(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, false));
+    box->addDrawable(osshar::makeBox(osg::Vec3(-3, 0, 1), osg::Vec3(1, 1, 1)).get());
+    box->addDrawable(own.get());
+    glass->addChild(pane.get());
+    scene->addChild(glass.get());
+    scene->addChild(box.get());
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    const std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+    ASSERT_EQ(casters.size(), 3u);
+    EXPECT_TRUE(casters[0].seeThrough) << "under a transparent group";
+    EXPECT_FALSE(casters[1].seeThrough);
+    EXPECT_TRUE(casters[2].seeThrough) << "its own osg::Depth writes nothing";
 }

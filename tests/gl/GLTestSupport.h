@@ -86,6 +86,14 @@ struct ShadowedRender
         return ossref::maskFromImage(*image);
     }
 
+    /** The technique's mask of light `index` after `frames` frames, scored against the
+     *  exact reference. */
+    ossref::Comparison scoreMask(unsigned int index = 0, int frames = 2)
+    {
+        const ossref::Mask m = mask(index, frames);
+        return ossref::compareMasks(m, reference(index));
+    }
+
     /** The exact reference mask of light `index` for the same view (its shadow rays offset
      *  by `offsetScale` of the scene's radius: ossref::computeReferenceMask). */
     ossref::Mask reference(unsigned int index = 0, double offsetScale = ossref::DEFAULT_OFFSET_SCALE) const
