@@ -126,59 +126,25 @@ private:
     std::vector<SettingsWarning>& _warnings;
 };
 
-} // namespace
-
-MappedSettings mapShadowSettings(const ShadowSettingsValues& settings, const MappedProperties& properties)
+/** TextureSize -> ShadowMapSize; the maps are square: the larger side. */
+void mapTextureSize(const osg::Vec2s& size, const osg::Vec2s& osgDefault, unsigned int own, PropertyMapping& mapping,
+                    unsigned int& effective)
 {
-    const ShadowSettingsValues& osgDefaults = osgShadowDefaults();
-    const MappedProperties ownDefaults;
-    MappedSettings mapped;
-    mapped.maximumShadowDistance = DBL_MAX;
-    // UseOverrideForShadowMapTexture false: a texture of the model on a map's unit replaces
-    // the map below it (a depth texture of 1s leaves a subgraph unshadowed).
-    mapped.mapsOverride = settings.useOverrideForShadowMapTexture;
-    PropertyMapping mapping(mapped.warnings);
-    MappedProperties& v = mapped.values;
-
-    // TextureSize -> ShadowMapSize; the maps are square: the larger side.
-    const osg::Vec2s size = settings.textureSize;
+    const unsigned int ownDefault = MappedProperties().shadowMapSize;
     const int side = std::max<int>(size.x(), size.y());
     const std::string sizeText = text(size.x()) + "x" + text(size.y());
-    mapping.apply(WARN_SETTINGS_TEXTURE_SIZE, "TextureSize", sizeText, size != osgDefaults.textureSize,
-                  "ShadowMapSize", properties.shadowMapSize, ownDefaults.shadowMapSize,
-                  static_cast<unsigned int>(std::max(side, 0)), v.shadowMapSize);
-    if (size.x() != size.y() && v.shadowMapSize == static_cast<unsigned int>(side) && side > 0 &&
-        properties.shadowMapSize == ownDefaults.shadowMapSize)
+    mapping.apply(WARN_SETTINGS_TEXTURE_SIZE, "TextureSize", sizeText, size != osgDefault, "ShadowMapSize", own,
+                  ownDefault, static_cast<unsigned int>(std::max(side, 0)), effective);
+    if (size.x() != size.y() && effective == static_cast<unsigned int>(side) && side > 0 && own == ownDefault)
         mapping.warn(WARN_SETTINGS_TEXTURE_SIZE_SQUARE, "ShadowSettings TextureSize " + sizeText +
                                                            " is not square; the shadow maps are: " + text(side) + "x" +
                                                            text(side) + " (the larger side)");
+}
 
-    mapping.apply(WARN_SETTINGS_LIGHT_NUM, "LightNum", text(settings.lightNum), settings.lightNum != osgDefaults.lightNum,
-                  "LightNum", properties.lightNum, ownDefaults.lightNum, settings.lightNum, v.lightNum);
-
-    mapping.apply(WARN_SETTINGS_BASE_UNIT, "BaseShadowTextureUnit", text(settings.baseShadowTextureUnit),
-                  settings.baseShadowTextureUnit != osgDefaults.baseShadowTextureUnit, "BaseTextureUnit",
-                  properties.baseTextureUnit, ownDefaults.baseTextureUnit, settings.baseShadowTextureUnit,
-                  v.baseTextureUnit);
-
-    mapping.apply(WARN_SETTINGS_DEBUG_DRAW, "DebugDraw", settings.debugDraw ? "true" : "false",
-                  settings.debugDraw != osgDefaults.debugDraw, "DebugView", properties.debugView, ownDefaults.debugView,
-                  int(settings.debugDraw ? SilhouetteShadowTechnique::DEBUG_SHADOW_MASK : ownDefaults.debugView),
-                  v.debugView);
-
-    // MaximumShadowMapDistance bounds the eye range the maps are fitted to, as in
-    // ViewDependentShadowMap.
-    const double distance = settings.maximumShadowMapDistance;
-    if (distance != osgDefaults.maximumShadowMapDistance)
-    {
-        if (distance > 0.0 && !std::isnan(distance))
-            mapped.maximumShadowDistance = distance;
-        else
-            mapping.ignore(WARN_SETTINGS_MAXIMUM_DISTANCE, "MaximumShadowMapDistance", text(distance),
-                           "it takes a distance above 0");
-    }
-
-    // Settings without a meaning here, where they differ from osgShadow's default.
+/** The settings without a meaning here warn where they differ from osgShadow's default. */
+void ignoreMeaningless(const ShadowSettingsValues& settings, const ShadowSettingsValues& osgDefaults,
+                       PropertyMapping& mapping)
+{
     const struct
     {
         int key;
@@ -209,6 +175,50 @@ MappedSettings mapShadowSettings(const ShadowSettingsValues& settings, const Map
     };
     for (const auto& m : meaningless)
         if (m.set) mapping.ignore(m.key, m.setting, m.value, m.why);
+}
+
+} // namespace
+
+MappedSettings mapShadowSettings(const ShadowSettingsValues& settings, const MappedProperties& properties)
+{
+    const ShadowSettingsValues& osgDefaults = osgShadowDefaults();
+    const MappedProperties ownDefaults;
+    MappedSettings mapped;
+    mapped.maximumShadowDistance = DBL_MAX;
+    // UseOverrideForShadowMapTexture false: a texture of the model on a map's unit replaces
+    // the map below it (a depth texture of 1s leaves a subgraph unshadowed).
+    mapped.mapsOverride = settings.useOverrideForShadowMapTexture;
+    PropertyMapping mapping(mapped.warnings);
+    MappedProperties& v = mapped.values;
+
+    mapTextureSize(settings.textureSize, osgDefaults.textureSize, properties.shadowMapSize, mapping, v.shadowMapSize);
+
+    mapping.apply(WARN_SETTINGS_LIGHT_NUM, "LightNum", text(settings.lightNum), settings.lightNum != osgDefaults.lightNum,
+                  "LightNum", properties.lightNum, ownDefaults.lightNum, settings.lightNum, v.lightNum);
+
+    mapping.apply(WARN_SETTINGS_BASE_UNIT, "BaseShadowTextureUnit", text(settings.baseShadowTextureUnit),
+                  settings.baseShadowTextureUnit != osgDefaults.baseShadowTextureUnit, "BaseTextureUnit",
+                  properties.baseTextureUnit, ownDefaults.baseTextureUnit, settings.baseShadowTextureUnit,
+                  v.baseTextureUnit);
+
+    mapping.apply(WARN_SETTINGS_DEBUG_DRAW, "DebugDraw", settings.debugDraw ? "true" : "false",
+                  settings.debugDraw != osgDefaults.debugDraw, "DebugView", properties.debugView, ownDefaults.debugView,
+                  int(settings.debugDraw ? SilhouetteShadowTechnique::DEBUG_SHADOW_MASK : ownDefaults.debugView),
+                  v.debugView);
+
+    // MaximumShadowMapDistance bounds the eye range the maps are fitted to, as in
+    // ViewDependentShadowMap.
+    const double distance = settings.maximumShadowMapDistance;
+    if (distance != osgDefaults.maximumShadowMapDistance)
+    {
+        if (distance > 0.0 && !std::isnan(distance))
+            mapped.maximumShadowDistance = distance;
+        else
+            mapping.ignore(WARN_SETTINGS_MAXIMUM_DISTANCE, "MaximumShadowMapDistance", text(distance),
+                           "it takes a distance above 0");
+    }
+
+    ignoreMeaningless(settings, osgDefaults, mapping);
     return mapped;
 }
 

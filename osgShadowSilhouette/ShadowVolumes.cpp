@@ -270,16 +270,13 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
         e.zSwitch->setSingleChildOn(zfail ? 0 : 1);
         ++(zfail ? _zfail : _zpass);
     }
-    const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
-    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
-    _root->accept(cv);
-    cv.setComputeNearFarMode(mode);
+    cullAgain(cv);
 }
 
 void ShadowVolumeGroup::cullAgain(osgUtil::CullVisitor& cv)
 {
     const osg::CullSettings::ComputeNearFarMode mode = cv.getComputeNearFarMode();
-    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR); // volumes reach infinity
     _root->accept(cv);
     cv.setComputeNearFarMode(mode);
 }
@@ -629,11 +626,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     _zfail = _zpass = _rebuilt = _culled = 0;
     _silhouettePixels = _volumeFragments = -1;
     _blockersHidden = _blockersTested = 0;
-    const auto add = [](long long& sum, long long value) {
-        if (value >= 0) sum = std::max(sum, 0LL) + value;
-    };
-    const osg::Vec3d eye = osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans();
-    const double nearRadius = nearPlaneRadius(cv);
+    const VolumeView view{osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans(), nearPlaneRadius(cv), receivers};
     const bool mask = maskSlot >= 0;
     const bool mark = _finalPass && !mask;
     // Receivers the base pass draws after the light passes (see cull() in the header).
@@ -641,7 +634,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     cv.pushStateSet(_outer.get());
     osgUtil::RenderBin* outer = cv.getCurrentRenderBin();
     // A light's receiver pass, without the receivers of the blended round.
-    const auto opaquePass = [&](osg::StateSet* pass) {
+    const CullReceivers opaquePass = [&](osg::StateSet* pass) {
         cullReceivers(pass);
         auto bin = outer->getRenderBinList().find(pass->getBinNumber());
         if (bin != outer->getRenderBinList().end()) detail::keepByBin(*bin->second, OUTER_BIN, false);
@@ -651,37 +644,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     {
         if (mask && int(light.slot) != maskSlot) continue;
         culled.push_back(light);
-        Slot& s = slotFor(light, hybrid, mask, mark);
-        cv.pushStateSet(s.clearState.get());
-        s.clear->accept(cv);
-        if (mark) _barrier->accept(cv); // the base pass's clear (or the last light's marks) first
-        cv.popStateSet();
-
-        if (s.hybrid)
-        {
-            s.maskBegin->accept(cv);
-            opaquePass(s.maskState.get());
-            s.maskEnd->accept(cv);
-            add(_silhouettePixels, s.maskCounter->getLastValue());
-        }
-        _rebuilt += s.volumes->update(casters, light.position);
-        s.volumeBegin->accept(cv);
-        cv.pushStateSet(s.volumeState.get());
-        s.volumes->cull(cv, eye, nearRadius, receivers, light.blockers.get());
-        cv.popStateSet();
-        s.volumeEnd->accept(cv);
-        add(_volumeFragments, s.volumeCounter->getLastValue());
-        if (light.blockers)
-        {
-            _blockersHidden += light.blockers->getHidden();
-            _blockersTested += light.blockers->getTested();
-        }
-        _zfail += s.volumes->getZFailCount();
-        _zpass += s.volumes->getZPassCount();
-        _culled += s.volumes->getCulledCount();
-
-        opaquePass(s.litState.get());
-        if (s.hybrid) opaquePass(s.litShadowMapState.get());
+        cullLight(cv, slotFor(light, hybrid, mask, mark), light, casters, view, opaquePass);
     }
     if (mark)
     {
@@ -695,6 +658,43 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     _blendedSkipped = lastLate > OUTER_BIN && mark;
     if (lastLate > OUTER_BIN && !mark)
         cullBlended(cv, std::max(BLENDED_MIN_BIN, lastLate + 1), culled, cullReceivers);
+}
+
+void StencilShadowPasses::cullLight(osgUtil::CullVisitor& cv, Slot& s, const StencilLight& light,
+                                    const std::vector<Caster>& casters, const VolumeView& view,
+                                    const CullReceivers& opaquePass)
+{
+    const auto add = [](long long& sum, long long value) {
+        if (value >= 0) sum = std::max(sum, 0LL) + value;
+    };
+    cv.pushStateSet(s.clearState.get());
+    s.clear->accept(cv);
+    if (s.mark) _barrier->accept(cv); // the base pass's clear (or the last light's marks) first
+    cv.popStateSet();
+    if (s.hybrid)
+    {
+        s.maskBegin->accept(cv);
+        opaquePass(s.maskState.get());
+        s.maskEnd->accept(cv);
+        add(_silhouettePixels, s.maskCounter->getLastValue());
+    }
+    _rebuilt += s.volumes->update(casters, light.position);
+    s.volumeBegin->accept(cv);
+    cv.pushStateSet(s.volumeState.get());
+    s.volumes->cull(cv, view.eye, view.nearRadius, view.receivers, light.blockers.get());
+    cv.popStateSet();
+    s.volumeEnd->accept(cv);
+    add(_volumeFragments, s.volumeCounter->getLastValue());
+    if (light.blockers)
+    {
+        _blockersHidden += light.blockers->getHidden();
+        _blockersTested += light.blockers->getTested();
+    }
+    _zfail += s.volumes->getZFailCount();
+    _zpass += s.volumes->getZPassCount();
+    _culled += s.volumes->getCulledCount();
+    opaquePass(s.litState.get());
+    if (s.hybrid) opaquePass(s.litShadowMapState.get());
 }
 
 void StencilShadowPasses::cullBlended(osgUtil::CullVisitor& cv, int outerBin, const std::vector<StencilLight>& lights,

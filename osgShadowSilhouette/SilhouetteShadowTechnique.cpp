@@ -3,6 +3,8 @@
 #include <osgShadowSilhouette/ShaderConstants>
 
 #include "EyePass.h"
+#include "FrameData.h"
+#include "ModePass.h"
 #include "RenderLeaves.h"
 #include "ScreenVisibility.h"
 #include "SceneVisitors.h"
@@ -41,16 +43,28 @@ using detail::CasterSignatureVisitor;
 using detail::prunePrepass;
 using detail::TagShaderDefinesVisitor;
 using detail::TraverseShadowedSceneCallback;
+using detail::FoundLight;
+using detail::FrameContext;
+using detail::LightPass;
+using detail::ModeFrame;
+using detail::ModePass;
+using detail::PassInputs;
+using detail::SlotPlan;
+using detail::ViewData;
+using namespace detail; // WarningKey
+
+/** The passes of @p mode: stateless, one for every view and thread. */
+ModePass& modePassFor(SilhouetteShadowTechnique::Mode mode)
+{
+    static const osg::ref_ptr<ModePass> passes[] = {
+        detail::createModePass(SilhouetteShadowTechnique::SHADOW_MAP),
+        detail::createModePass(SilhouetteShadowTechnique::SILHOUETTE_MAP),
+        detail::createModePass(SilhouetteShadowTechnique::HYBRID),
+        detail::createModePass(SilhouetteShadowTechnique::SHADOW_VOLUME)};
+    return *passes[mode >= 0 && mode < 4 ? mode : 0];
+}
 
 constexpr unsigned int MAX_MAP_SIZE = 16384;
-
-/** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
- *  win over the model's state on the same units: a model's texture on a map's unit would
- *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
- *  none of the model's units there; a program of the model's own that does needs another
- *  BaseTextureUnit. The maps' textures give up OVERRIDE where the ShadowSettings'
- *  UseOverrideForShadowMapTexture is false (mapBinding()). */
-constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
 
 /** Whether @p value is one property @p name takes (PropertyRanges); a warning naming the
  *  property, the value, its range and the value kept otherwise. */
@@ -67,24 +81,6 @@ bool acceptValue(const char* name, T value, T kept)
              << std::endl;
     return false;
 }
-
-enum WarningKey
-{
-    WARN_OVER_BUDGET = 1,
-    WARN_NO_LIGHT,
-    WARN_MAP_SIZE,
-    WARN_NO_STENCIL,
-    WARN_FACE_SLOTS,
-    WARN_NO_TRIANGLE_LISTS,
-    WARN_LIST_SLOTS,
-    WARN_LIST_OVERFLOW,
-    WARN_LIST_FULL,
-    WARN_CONTEXT_MAP_SIZE,
-    WARN_LIGHT_NUM,
-    WARN_DEBUG_LIGHT,
-    WARN_SCREEN_VISIBILITY,
-    WARN_BLENDED_VISIBILITY,
-};
 
 osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
 {
@@ -117,6 +113,23 @@ osg::ref_ptr<osg::Texture2D> createLitTexture()
     return t;
 }
 
+
+/** HYBRID's triangle lists: per slot its capacities and projection, and the frames of the
+ *  shadow rays' offset and of the lookups' bias. */
+void createListUniforms(ViewData& vd, unsigned int slots)
+{
+    // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
+    // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
+    vd.listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
+    vd.listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
+    for (unsigned int slot = 0; slot < slots; ++slot)
+    {
+        vd.listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
+        vd.listPerspective->setElement(slot, 0);
+    }
+    vd.listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    vd.lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+}
 
 } // namespace
 
@@ -601,7 +614,7 @@ void SilhouetteShadowTechnique::releaseGLObjects(osg::State* state) const
 // ---------------------------------------------------------------------------------------
 // Per-view data
 
-SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::getViewData(osgUtil::CullVisitor& cv)
+ViewData* SilhouetteShadowTechnique::getViewData(osgUtil::CullVisitor& cv)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
     osg::ref_ptr<ViewData>& vd = _viewDataMap[&cv];
@@ -609,7 +622,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::getViewData(osgU
     return vd.get();
 }
 
-SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
+ViewData* SilhouetteShadowTechnique::createViewData()
 {
     osg::ref_ptr<ViewData> vd = new ViewData;
     osg::StateSet* ss = new osg::StateSet;
@@ -648,17 +661,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
         vd->lightIndex->setElement(i, i);
         vd->shadowSlot->setElement(i, -1);
     }
-    // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
-    // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
-    vd->listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
-    vd->listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
-    for (unsigned int slot = 0; slot < slots; ++slot)
-    {
-        vd->listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
-        vd->listPerspective->setElement(slot, 0);
-    }
-    vd->listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
-    vd->lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    createListUniforms(*vd, slots);
     for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
                             vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
                             vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(),
@@ -677,7 +680,7 @@ SilhouetteShadowTechnique::ViewData* SilhouetteShadowTechnique::createViewData()
     return vd.release();
 }
 
-SilhouetteShadowTechnique::LightPass SilhouetteShadowTechnique::createLightPass(unsigned int slot) const
+LightPass SilhouetteShadowTechnique::createLightPass(unsigned int slot) const
 {
     LightPass pass;
     pass.depthTexture = createDepthTexture(_shadowMapSize);
@@ -728,9 +731,38 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     // The receivers are culled first: a LightSource among them is known only afterwards. Their
     // pass state set gets the stencil modes' lighting program once the method is known.
     cullReceivers(cv, vd, vd.receiverPassStateSet.get());
+    Statistics stats;
+    const std::vector<FoundLight> lights = cullLights(cv, vd, stats);
+    stats.effectiveMode = frame.mode;
+    _renderedMode = int(frame.mode);
+    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
+    else prepareFrame(cv, frame);
+    warnAboutMissingLights(lights);
+    const SlotPlan plan = planSlots(frame, lights, stats);
+    stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
+    // The mode's passes: its method and configuration, its passes per slot, then over the eye.
+    const detail::PassSettings settings = passSettings();
+    detail::PassServices services;
+    services.warnOnce = [this](int key, const std::string& message) { warnOnce(key, message); };
+    services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
+    services.warnAlphaTested = [this](bool hybrid, bool lists) {
+        if (!_alphaTested.empty()) warnAlphaTested(hybrid, lists);
+    };
+    ModeFrame mf{cv, vd, frame, stats, eye, settings, services};
+    ModePass& mode = modePassFor(frame.mode);
+    mode.planFrame(mf);
+    prepareEyePass(mf);
+    cullShadowSlots(mf, mode, lights, plan);
+    mode.cullEyePasses(mf, lights, plan.slots);
+    updateViewUniforms(cv, vd, lights, plan.slots, eye);
+    finishEyePass(mf);
+}
+
+std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisitor& cv, ViewData& vd, Statistics& stats)
+{
     std::vector<int> refused;
-    const std::vector<FoundLight> lights = collectLights(cv, refused);
+    std::vector<FoundLight> lights = collectLights(cv, refused);
     // The receiver shading lights only the lights found (oss_lightIndex); drawables under a
     // program of their own, or all with UseDefaultShading false, are lit by OpenGL, which
     // would spread a refused light's NaN: its GL light is turned off for them.
@@ -741,14 +773,14 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         else
             vd.receiverStateSet->removeMode(GL_LIGHT0 + num);
     }
-    Statistics stats;
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
-    stats.effectiveMode = frame.mode;
-    _renderedMode = int(frame.mode);
-    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
-    else prepareFrame(cv, frame);
-    warnAboutMissingLights(lights);
+    return lights;
+}
+
+SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::vector<FoundLight>& lights,
+                                              Statistics& stats) const
+{
     // Lights whose cone or range misses what the view sees cost nothing: no passes, no slot.
     std::vector<bool> reaches(lights.size());
     for (std::size_t i = 0; i < lights.size(); ++i)
@@ -756,57 +788,57 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         reaches[i] = lightReachesRegion(lights[i].description, frame.region);
         if (!reaches[i] && castsShadow(lights[i])) ++stats.lightsSkipped;
     }
-    const std::vector<int> slots = assignShadowSlots(lights, reaches);
-    stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
-
+    SlotPlan plan;
+    plan.slots = assignShadowSlots(lights, reaches);
     // Each light's frusta; cube faces of point lights take the slots after the lights' own.
     unsigned int nextFreeSlot = 0;
-    for (int slot : slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
-    std::vector<std::vector<LightFrustum>> frusta(lights.size());
-    std::vector<unsigned int> firstFaceSlot(lights.size(), 0);
+    for (int slot : plan.slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
+    plan.frusta.resize(lights.size());
+    plan.firstFaceSlot.assign(lights.size(), 0);
     for (std::size_t i = 0; i < lights.size(); ++i)
-        if (slots[i] >= 0)
-            firstFaceSlot[i] = nextFreeSlot, frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
-                                                                         slotCapacity(pairedSlots(frame.mode)));
-    frame.triangleLists = frame.mode == HYBRID && useTriangleLists(cv);
-    const unsigned int blocks = cv.getState() ? TriangleListPass::fragmentStorageBlocks(cv.getState()->getContextID()) : 0;
-    const unsigned int listLimit = blocks > 0 ? std::min(listSlots(), blocks) : listSlots();
-    if (frame.triangleLists && nextFreeSlot > listLimit)
     {
-        warnOnce(WARN_LIST_SLOTS, "HYBRID: this frame's " + std::to_string(nextFreeSlot) +
-                                      " shadow maps (cube faces included) exceed the " + std::to_string(listLimit) +
-                                      " that triangle lists hold (one fragment shader storage block each: "
-                                      "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS is " + std::to_string(blocks) +
-                                      "); using HYBRID_STENCIL_VOLUMES");
-        frame.triangleLists = false;
+        if (plan.slots[i] < 0) continue;
+        plan.firstFaceSlot[i] = nextFreeSlot;
+        plan.frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
+                                         slotCapacity(pairedSlots(frame.mode)));
     }
-    // One storage block (or image) per slot in use: the eye pass declares no more than it reads.
-    eye.triangleLists = frame.triangleLists;
-    eye.listSlots = std::max(1u, nextFreeSlot);
-    std::size_t listTexels = 0;
-    for (unsigned int slot = 0; slot < nextFreeSlot && slot < vd.passes.size(); ++slot)
-        if (vd.passes[slot].listPass) listTexels = std::max(listTexels, vd.passes[slot].listPass->getBufferSize() / 16);
-    stats.listImages = frame.triangleLists && _tuning.listImageReads && cv.getState() &&
-                       TriangleListPass::imageReadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot), listTexels);
-    eye.listImages = stats.listImages;
-    stats.listBlockHeads = stats.listImages && _tuning.listBlockHeads &&
-                           TriangleListPass::blockHeadsFit(cv.getState()->getContextID(), std::max(1u, nextFreeSlot));
-    eye.listBlockHeads = stats.listBlockHeads;
-    stats.triangleLists = frame.triangleLists;
-    if ((frame.mode == SHADOW_VOLUME || frame.mode == HYBRID) && !_alphaTested.empty())
-        warnAlphaTested(frame.mode == HYBRID, frame.triangleLists);
-    const bool stencilMode = frame.mode == SHADOW_VOLUME || (frame.mode == HYBRID && !frame.triangleLists);
-    // Statistics of HYBRID's lists: the fragments resolved exactly, counted in the eye pass.
-    const bool countExact = frame.triangleLists && _stats.valid();
-    eye.countExact = countExact;
-    if (countExact)
-    {
-        vd.exactBegin->accept(cv);
-        vd.exactEnd->accept(cv);
-        stats.silhouettePixels = vd.exactCounter->getLastValue();
-    }
-    if (stencilMode && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
-    if (stencilMode)
+    frame.slotsInUse = nextFreeSlot;
+    return plan;
+}
+
+detail::PassSettings SilhouetteShadowTechnique::passSettings() const
+{
+    detail::PassSettings s;
+    s.mode = _mode;
+    s.shadowMapSize = _shadowMapSize;
+    s.blockerCulling = _blockerCulling;
+    s.hybridEdgeMask = _hybridEdgeMask;
+    s.hybridMethod = _hybridMethod;
+    s.debugView = _debugView;
+    s.debugLight = _debugLight;
+    s.tuning = _tuning;
+    s.listSlots = listSlots();
+    s.recordingStats = _stats.valid();
+    s.applicationPrograms = hasApplicationPrograms();
+    s.shadowedScene = _shadowedScene;
+    s.silhouetteMapStateSet = _silhouetteMapStateSet.get();
+    s.listStateSet = _listStateSet.get();
+    s.listFrontOnlyStateSet = _listFrontOnlyStateSet.get();
+    s.listedDrawables = _listedDrawables.get();
+    s.stencilProgram = _stencilProgram.get();
+    s.volumeProgram = _volumeProgram.get();
+    s.defaultSilhouetteTexture = _defaultSilhouetteTexture.get();
+    s.defaultNeighbourhoodTexture = _defaultNeighbourhoodTexture.get();
+    return s;
+}
+
+void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)
+{
+    osgUtil::CullVisitor& cv = mf.cv;
+    ViewData& vd = mf.vd;
+    const FrameContext& frame = mf.frame;
+    if (frame.stencil && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
+    if (frame.stencil)
         vd.receiverPassStateSet->setAttributeAndModes(_stencilProgram.get(),
                                                       osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     else
@@ -817,63 +849,66 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         vd.receiverStateSet->setDefine(shader::DEFINE_GLSL_430);
     else
         vd.receiverStateSet->removeDefine(shader::DEFINE_GLSL_430);
-    stats.screenVisibility = cullScreenVisibility(cv, vd, stencilMode);
+    mf.stats.screenVisibility = detail::cullScreenVisibility(mf);
     std::size_t casterTriangles = 0;
     for (const Caster& caster : frame.casterList) casterTriangles += caster.mesh->getAdjacency().report.inputTriangles;
     const osg::Viewport* eyeViewport = cv.getViewport();
-    stats.depthPrepass = usesDepthPrepass(frame.mode, frame.triangleLists, casterTriangles, std::max(1u, nextFreeSlot),
-                                          eyeViewport ? eyeViewport->width() * eyeViewport->height() : 0.0);
-    if (stats.depthPrepass)
+    mf.stats.depthPrepass =
+        usesDepthPrepass(frame.mode, frame.triangleLists, casterTriangles, std::max(1u, frame.slotsInUse),
+                         eyeViewport ? eyeViewport->width() * eyeViewport->height() : 0.0);
+    if (mf.stats.depthPrepass)
         cullDepthPrepass(cv, vd);
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::DEPTH);
+}
 
-    const bool silhouette = frame.mode == SILHOUETTE_MAP;
-    const bool paired = pairedSlots(frame.mode);
+void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, const std::vector<FoundLight>& lights,
+                                                const SlotPlan& plan)
+{
+    ViewData& vd = mf.vd;
+    const bool paired = pairedSlots(mf.frame.mode);
     const unsigned int capacity = slotCapacity(paired);
-    eye.slotCapacity = capacity;
+    mf.eye.slotCapacity = capacity;
     // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
-    std::vector<osg::Texture2D*> silhouetteMaps(
-        capacity, silhouette ? _defaultNeighbourhoodTexture.get() : _defaultSilhouetteTexture.get());
+    osg::Texture2D* second = mode.defaultSecondMap(mf.settings);
+    std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _defaultSilhouetteTexture.get());
     for (unsigned int slot = 0; slot < vd.passes.size(); ++slot)
     {
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
-            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(silhouette),
+            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(mode.rawDepthMaps()),
                                                              mapBinding());
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
         vd.slotSkipped[slot] = false;
     }
-    // SILHOUETTE_MAP's silhouette maps, and HYBRID's edge masks (silhouette maps too); in
-    // SHADOW_MAP their units hold the depth maps bound above.
-    const bool edgeMasks = frame.mode == HYBRID && _hybridEdgeMask;
-    if (paired) bindSilhouetteMaps(vd, silhouette || edgeMasks ? silhouetteMaps : std::vector<osg::Texture2D*>());
-    eye.edgeMasks = edgeMasks;
+    // The second maps' units; in SHADOW_MAP they hold the depth maps bound above.
+    if (paired) bindSilhouetteMaps(vd, second ? secondMaps : std::vector<osg::Texture2D*>());
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
-        if (slots[i] < 0) continue;
-        ++stats.lightsShadowed;
-        cullLight(cv, vd, frame, lights[i].description, static_cast<unsigned int>(slots[i]), frusta[i],
-                  firstFaceSlot[i], silhouetteMaps, stats);
+        if (plan.slots[i] < 0) continue;
+        ++mf.stats.lightsShadowed;
+        cullLight(mf, mode, lights[i].description, static_cast<unsigned int>(plan.slots[i]), plan.frusta[i],
+                  plan.firstFaceSlot[i], secondMaps);
     }
-    if (silhouette || edgeMasks) bindSilhouetteMaps(vd, silhouetteMaps);
+    if (second) bindSilhouetteMaps(vd, secondMaps);
+}
 
-    if (stencilMode)
-        cullStencilPasses(cv, vd, frame.mode == HYBRID, lights, slots, frame.casterList, frame.receivers, stats);
-    updateViewUniforms(cv, vd, lights, slots, eye);
-    detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(eye));
+void SilhouetteShadowTechnique::finishEyePass(ModeFrame& mf)
+{
+    ViewData& vd = mf.vd;
+    detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(mf.eye));
     // A mask is 0 or 1: a blended scene (an alpha-tested tree that also blends) must not
     // mix it with what lies behind. The alpha still reaches the scene's osg::AlphaFunc.
     if (_debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES)
         vd.receiverStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverStateSet->removeMode(GL_BLEND);
-    cullProgramLinkCheck(cv);
-    if (const osg::Viewport* viewport = cv.getViewport())
-        stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
-    recordStatistics(stats);
+    cullProgramLinkCheck(mf.cv);
+    if (const osg::Viewport* viewport = mf.cv.getViewport())
+        mf.stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
+    recordStatistics(mf.stats);
 }
 
 unsigned int SilhouetteShadowTechnique::slotCapacity(bool paired) const
@@ -987,15 +1022,15 @@ std::vector<LightFrustum> SilhouetteShadowTechnique::planLightFrusta(const Frame
     return frusta;
 }
 
-void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
-                                          const LightDescription& light, unsigned int slot,
-                                          const std::vector<LightFrustum>& frusta, unsigned int firstFaceSlot,
-                                          std::vector<osg::Texture2D*>& silhouetteMaps, Statistics& stats)
+void SilhouetteShadowTechnique::cullLight(ModeFrame& mf, ModePass& mode, const LightDescription& light,
+                                          unsigned int slot, const std::vector<LightFrustum>& frusta,
+                                          unsigned int firstFaceSlot, std::vector<osg::Texture2D*>& secondMaps)
 {
+    ViewData& vd = mf.vd;
     if (!frusta.front().valid)
     {
         vd.passes[slot].frustum = LightFrustum();
-        ++stats.lightsSkipped; // nothing can shadow what this view sees
+        ++mf.stats.lightsSkipped; // nothing can shadow what this view sees
         return;
     }
     for (std::size_t k = 0; k < frusta.size(); ++k)
@@ -1003,65 +1038,54 @@ void SilhouetteShadowTechnique::cullLight(osgUtil::CullVisitor& cv, ViewData& vd
         const unsigned int s = k == 0 ? slot : firstFaceSlot + static_cast<unsigned int>(k - 1);
         vd.slotOwner->setElement(s, int(slot));
         vd.slotCore->setElement(s, float(frusta[k].faceCore));
-        cullSlot(cv, vd, frame, light, s, frusta[k], silhouetteMaps[s], stats);
+        cullSlot(mf, mode, light, s, frusta[k], secondMaps[s]);
     }
 }
 
-void SilhouetteShadowTechnique::cullSlot(osgUtil::CullVisitor& cv, ViewData& vd, const FrameContext& frame,
-                                         const LightDescription& light, unsigned int slot, const LightFrustum& frustum,
-                                         osg::Texture2D*& silhouetteMap, Statistics& stats)
+void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const LightDescription& light,
+                                         unsigned int slot, const LightFrustum& frustum, osg::Texture2D*& secondMap)
 {
-    const bool silhouette = frame.mode == SILHOUETTE_MAP;
+    ViewData& vd = mf.vd;
+    const bool raw = mode.rawDepthMaps();
     LightPass& pass = vd.passes[slot];
     // SILHOUETTE_MAP reads raw depths and compares them itself; the other modes sample with
     // hardware comparison. A texture's comparison mode is fixed at creation: toggling it on a
     // texture GL already has is not reliably re-applied, so switching rebuilds.
     if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize) ||
-        pass.depthTexture->getShadowComparison() == silhouette)
+        pass.depthTexture->getShadowComparison() == raw)
     {
         pass = createLightPass(slot);
-        pass.depthTexture->setShadowComparison(!silhouette);
+        pass.depthTexture->setShadowComparison(!raw);
     }
     pass.frustum = frustum;
-    if (frame.mode == SHADOW_VOLUME) return; // volumes only, no map
+    if (!mode.drawsMaps()) return; // volumes only, no map
     vd.slotInUse[slot] = true;
-    // Blocker culling tests casters against this map alone: not for a cube face, which sees
-    // only part of the light's casters; triangle lists need no volumes to skip; and not with
-    // the edge mask: a caster the map's samples call hidden may still shadow what shows
-    // through gaps thinner than a texel, which is what the edge mask resolves.
-    const bool blockers = frame.mode == HYBRID && _blockerCulling && !_hybridEdgeMask && !frame.triangleLists &&
-                          frustum.faceCore == 0.0;
-    if (blockers && !pass.blockers) pass.blockers = new BlockerQueries;
-    if (!blockers) pass.blockers = nullptr;
-    if (blockers) pass.blockers->update(frame.casterList);
-    osg::Node* queries = blockers ? pass.blockers->getNode() : nullptr;
-    pass.samples->setEnabled(!blockers && frustum.faceCore > 0.0); // one sample query at a time; only faces skip
+    osg::Node* queries = mode.depthPassQueries(mf, pass);
+    if (!queries) pass.blockers = nullptr;
+    pass.samples->setEnabled(!queries && frustum.faceCore > 0.0); // one sample query at a time; only faces skip
     if (pass.depthCamera->getNumChildren() != (queries ? 1u : 0u) || (queries && pass.depthCamera->getChild(0) != queries))
     {
         pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
         if (queries) pass.depthCamera->addChild(queries);
     }
-    cullLightPasses(cv, pass, frame, light, stats);
+    detail::SlotCull cull{light, slot, pass, cullLightPasses(mf, mode, pass, light), secondMap};
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), mapBinding());
-    if (frame.triangleLists) cullTriangleListPass(cv, vd, pass, slot, frame, light);
-    if (frame.mode == HYBRID && _hybridEdgeMask) cullEdgeMask(cv, pass, frame, light, silhouetteMap, stats);
+    mode.cullSlot(mf, cull);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
     // nothing: the eye pass leaves it out. The counts come back a frame or two late; until
-    // then, and in every frame that rebuilds, the face is evaluated.
-    const bool receiverProgram = frame.mode == SHADOW_MAP || frame.mode == SILHOUETTE_MAP || frame.triangleLists;
-    vd.slotSkipped[slot] = _tuning.skipEmptyFaces && receiverProgram && frustum.faceCore > 0.0 &&
+    // then, and in every frame that rebuilds, the face is evaluated. Not the stencil passes.
+    const FrameContext& frame = mf.frame;
+    vd.slotSkipped[slot] = _tuning.skipEmptyFaces && !frame.stencil && frustum.faceCore > 0.0 &&
                            (frame.triangleLists ? pass.listPass && pass.listPass->listedNothing()
                                                 : pass.samples->drewNothing());
-    if (vd.slotSkipped[slot]) ++stats.slotsSkipped;
-    if (pass.samples->getEnabled() && pass.samples->pending()) pass.samples->getPollNode()->accept(cv);
-    if (!silhouette) return;
-    silhouetteMap = pass.silhouettePass->getNeighbourhoodTexture();
-    stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
+    if (vd.slotSkipped[slot]) ++mf.stats.slotsSkipped;
+    if (pass.samples->getEnabled() && pass.samples->pending()) pass.samples->getPollNode()->accept(mf.cv);
 }
 
-void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightPass& pass, const FrameContext& frame,
-                                                const LightDescription& light, Statistics& stats)
+bool SilhouetteShadowTechnique::cullLightPasses(ModeFrame& mf, const ModePass& mode, LightPass& pass,
+                                                const LightDescription& light)
 {
+    const FrameContext& frame = mf.frame;
     PassInputs inputs;
     inputs.valid = true;
     inputs.glGeneration = getGLGeneration();
@@ -1071,9 +1095,7 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     inputs.projection = pass.frustum.projection;
     inputs.light = light.homogeneous();
     inputs.polygonOffsetFactor = getEffectivePolygonOffsetFactor(frame.mode);
-    const bool silhouette = frame.mode == SILHOUETTE_MAP;
-    const bool reuse = inputs == pass.rendered &&
-                       (!silhouette || (pass.silhouettePass && pass.silhouettePass->getMapSize() == _shadowMapSize));
+    const bool reuse = inputs == pass.rendered && mode.keepsSlotPasses(pass, mf.settings);
     if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
     {
         scene->setCasters(!reuse);
@@ -1083,12 +1105,10 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
     if (reuse)
     {
-        if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(cv, pass); // the blocker queries alone
-        ++stats.depthPassesReused;
-        ++stats.shadowPasses; // in use, kept from an earlier frame
-        stats.silhouettePassesReused += silhouette ? 1 : 0;
-        stats.extractionsSkipped += silhouette ? 1 : 0;
-        return;
+        if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(mf.cv, pass); // the blocker queries alone
+        ++mf.stats.depthPassesReused;
+        ++mf.stats.shadowPasses; // in use, kept from an earlier frame
+        return false;
     }
     const float factor = inputs.polygonOffsetFactor;
     osg::StateSet* depthState = pass.depthCamera->getStateSet(); // the pass's own (shallow) copy
@@ -1096,12 +1116,10 @@ void SilhouetteShadowTechnique::cullLightPasses(osgUtil::CullVisitor& cv, LightP
     if (!offset || offset->getFactor() != factor || offset->getUnits() != _polygonOffsetUnits)
         depthState->setAttributeAndModes(new osg::PolygonOffset(factor, _polygonOffsetUnits),
                                          osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-    cullDepthPass(cv, pass);
-    ++stats.shadowPasses;
+    cullDepthPass(mf.cv, pass);
+    ++mf.stats.shadowPasses;
     pass.rendered = inputs;
-    if (!silhouette) return;
-    cullSilhouettePass(cv, pass, light, frame.casterList, false);
-    stats.extractionsSkipped += pass.silhouettePass->getExtractionSkipped() ? 1 : 0;
+    return true;
 }
 
 void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
@@ -1117,113 +1135,6 @@ void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
     if (_properties.shadowMapSize == _shadowMapSize) _properties.shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
     _shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
 }
-
-bool SilhouetteShadowTechnique::useTriangleLists(osgUtil::CullVisitor& cv) const
-{
-    if (_hybridMethod == HYBRID_STENCIL_VOLUMES) return false;
-    const osg::State* state = cv.getState();
-    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
-    const bool supported = ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier;
-    if (!supported && _hybridMethod == HYBRID_TRIANGLE_LISTS)
-        warnOnce(WARN_NO_TRIANGLE_LISTS, "HybridMethod HYBRID_TRIANGLE_LISTS needs OpenGL 4.3 (shader storage "
-                                         "buffers, image atomics) and the context has less; using HYBRID_STENCIL_VOLUMES");
-    return supported;
-}
-
-void SilhouetteShadowTechnique::cullTriangleListPass(osgUtil::CullVisitor& cv, ViewData& vd, LightPass& pass,
-                                                     unsigned int slot, const FrameContext& frame,
-                                                     const LightDescription& light)
-{
-    std::size_t triangles = 0;
-    for (const Caster& caster : frame.casterList) triangles += caster.mesh->getAdjacency().report.inputTriangles;
-    const unsigned int grid = TriangleListPass::MAX_GRID_SIZE;
-    // A build that listed more than the pass holds (read back a frame or two later) left that
-    // slot's silhouette pixels to the shadow map: rebuild with room for what it needed.
-    std::size_t neededNodes = 0, neededTriangles = 0;
-    bool grow = false;
-    if (pass.listPass && pass.listPass->overflowed(neededNodes, neededTriangles))
-    {
-        const std::size_t nodes = std::min(neededNodes + neededNodes / 4, TriangleListPass::MAX_NODES);
-        const std::size_t tris = std::min(neededTriangles, TriangleListPass::MAX_TRIANGLES);
-        grow = nodes > pass.listPass->getNodeCapacity() || tris > pass.listPass->getTriangleCapacity();
-        warnOnce(grow ? WARN_LIST_OVERFLOW : WARN_LIST_FULL,
-                 "HYBRID: the triangle lists of shadow slot " + std::to_string(slot) + " needed " +
-                     std::to_string(neededNodes) + " nodes and " + std::to_string(neededTriangles) +
-                     " triangles, with room for " + std::to_string(pass.listPass->getNodeCapacity()) + " and " +
-                     std::to_string(pass.listPass->getTriangleCapacity()) +
-                     "; that light's silhouette pixels took the shadow map's answer" +
-                     (grow ? std::string("; the lists are rebuilt larger")
-                           : "; the lists cannot grow further (" + std::to_string(TriangleListPass::MAX_NODES) +
-                                 " nodes, " + std::to_string(TriangleListPass::MAX_TRIANGLES) + " triangles)"));
-        triangles = std::max(triangles, tris);
-        neededNodes = nodes;
-    }
-    if (!pass.listPass || !pass.listPass->fits(grid, triangles) || grow)
-    {
-        pass.listPass = new TriangleListPass(grid, triangles, *_listStateSet,
-                                             "osgShadowSilhouette triangle lists " + std::to_string(slot),
-                                             grow ? neededNodes : 0, _tuning.listNodeReservePerTexel);
-        auto* scene = new TraverseShadowedSceneCallback(_shadowedScene);
-        scene->setListed(_listedDrawables.get());
-        pass.listPass->getCamera()->setCullCallback(scene);
-        pass.listRendered = PassInputs();
-    }
-    const bool sameReceivers = pass.listReceivers._min == frame.receivers._min &&
-                               pass.listReceivers._max == frame.receivers._max;
-    if (!(pass.listRendered == pass.rendered) || !sameReceivers) // the lists describe another depth map
-    {
-        if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.listPass->getCamera()->getCullCallback()))
-        {
-            scene->setExcluded(frame.nonFinite);
-            scene->setBillboards(frame.billboards);
-            std::unordered_set<const osg::Drawable*> closed;
-            for (const Caster& caster : frame.casterList)
-                if (caster.closed) closed.insert(caster.geometry.get());
-            scene->setMarked(std::move(closed), _listFrontOnlyStateSet.get());
-        }
-        const unsigned int mask = cv.getTraversalMask();
-        cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
-        pass.listPass->cull(cv, pass.frustum, light.type != LightDescription::DIRECTIONAL, frame.receivers);
-        cv.setTraversalMask(mask);
-        pass.listRendered = pass.rendered;
-        pass.listReceivers = frame.receivers;
-    }
-    // The counts of a finished build come back through the eye pass of a later frame.
-    if (pass.listPass->countPending()) pass.listPass->getPollNode()->accept(cv);
-    osg::StateSet& ss = *vd.receiverStateSet;
-    const unsigned int binding = shader::LIST_READ_BINDING + slot;
-    auto* bound = dynamic_cast<osg::ShaderStorageBufferBinding*>(
-        ss.getAttribute(osg::StateAttribute::SHADERSTORAGEBUFFERBINDING, binding));
-    if (!bound || bound->getBufferData() != pass.listPass->getBuffer())
-        ss.setAttributeAndModes(new osg::ShaderStorageBufferBinding(binding, pass.listPass->getBuffer(), 0,
-                                                                    pass.listPass->getBufferSize()),
-                                EYE_PASS_BINDING);
-    // The same buffer as a read-only image, for eye passes that read images (OSS_LIST_IMAGES).
-    const unsigned int unit = shader::LIST_READ_IMAGE_UNIT + slot;
-    auto* image = dynamic_cast<osg::BindImageTexture*>(ss.getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit));
-    if (!image || image->getTexture() != pass.listPass->getImageView())
-        ss.setAttributeAndModes(new osg::BindImageTexture(unit, pass.listPass->getImageView(),
-                                                          osg::BindImageTexture::READ_ONLY, GL_RGBA32UI_EXT),
-                                EYE_PASS_BINDING);
-    vd.listCapacity->setElement(slot, pass.listPass->getNodeCapacity(), pass.listPass->getTriangleCapacity(),
-                                pass.listPass->getGridSize(), 0u);
-    vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
-}
-
-void SilhouetteShadowTechnique::cullEdgeMask(osgUtil::CullVisitor& cv, LightPass& pass, const FrameContext& frame,
-                                             const LightDescription& light, osg::Texture2D*& silhouetteMap,
-                                             Statistics& stats)
-{
-    if (!pass.silhouettePass || pass.silhouettePass->getMapSize() != _shadowMapSize) pass.edgesRendered = PassInputs();
-    if (!(pass.edgesRendered == pass.rendered)) // the mask describes another depth map
-    {
-        cullSilhouettePass(cv, pass, light, frame.casterList, true);
-        pass.edgesRendered = pass.rendered;
-    }
-    silhouetteMap = pass.silhouettePass->getTexture();
-    stats.silhouetteEdges += static_cast<unsigned int>(pass.silhouettePass->getEdges()->getEdgeCount());
-}
-
 
 void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd)
 {
@@ -1271,86 +1182,6 @@ SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgU
     return SHADOW_MAP;
 }
 
-void SilhouetteShadowTechnique::cullStencilPasses(osgUtil::CullVisitor& cv, ViewData& vd, bool hybrid,
-                                                  const std::vector<FoundLight>& lights, const std::vector<int>& slots,
-                                                  const std::vector<Caster>& casters,
-                                                  const osg::BoundingBoxd& receivers, Statistics& stats)
-{
-    std::vector<StencilLight> stencilLights;
-    const bool oneLight = _debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES; // only its passes
-    int maskSlot = -1;
-    for (std::size_t i = 0; i < lights.size(); ++i)
-    {
-        if (slots[i] < 0 || !vd.passes[slots[i]].frustum.valid) continue;
-        const LightPass& pass = vd.passes[slots[i]];
-        unsigned int faceSlots = 0;
-        for (unsigned int s = 0; s < vd.slotInUse.size(); ++s)
-        {
-            int owner = -1;
-            vd.slotOwner->getElement(s, owner);
-            if (owner == slots[i]) faceSlots |= 1u << s;
-        }
-        stencilLights.push_back({static_cast<unsigned int>(slots[i]), lights[i].description.lightNum,
-                                 lights[i].description.homogeneous(),
-                                 hybrid && _blockerCulling ? pass.blockers : nullptr, faceSlots});
-        if (oneLight && i == _debugLight) maskSlot = slots[i];
-    }
-    if (oneLight && maskSlot < 0) stencilLights.clear(); // the debug light casts nothing
-    vd.stencil->cull(cv, hybrid, oneLight ? maskSlot : -1, stencilLights, casters, receivers,
-                     [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
-    stats.zfailCasters = vd.stencil->getZFailCasters();
-    stats.zpassCasters = vd.stencil->getZPassCasters();
-    stats.volumesRebuilt = vd.stencil->getVolumesRebuilt();
-    stats.volumesCulled = vd.stencil->getVolumesCulled();
-    stats.blendedRound = vd.stencil->getBlendedRound();
-    if (vd.stencil->getBlendedSkipped())
-        warnOnce(WARN_BLENDED_VISIBILITY,
-                 std::string("Mode ") + modeName(_mode) +
-                     ": receivers in the transparent bin (or a later one) get no shadow of their own while a "
-                     "program given to addShadowShaders() draws the receivers: the screen-space visibility has "
-                     "no blended round yet; they show the opaque surface's shadow behind them");
-    stats.silhouettePixels = hybrid ? vd.stencil->getSilhouettePixels() : -1;
-    stats.volumeFragments = vd.stencil->getVolumeFragments();
-    stats.blockersTested = vd.stencil->getBlockersTested();
-    stats.blockersSkipped = vd.stencil->getBlockersHidden();
-}
-
-bool SilhouetteShadowTechnique::cullScreenVisibility(osgUtil::CullVisitor& cv, ViewData& vd, bool stencilMode)
-{
-    // The mask and class views draw the technique's own answer, one light at a time.
-    bool use = stencilMode && _debugView != DEBUG_SHADOW_MASK && _debugView != DEBUG_CLASSES && hasApplicationPrograms();
-    const osg::Viewport* viewport = cv.getViewport();
-    if (use && (!viewport || !cv.getState() || !detail::ScreenVisibility::supported(cv.getState()->getContextID())))
-    {
-        warnOnce(WARN_SCREEN_VISIBILITY,
-                 std::string("Mode ") + modeName(_mode) +
-                     ": the graphics context runs no OpenGL 4.3 (GLSL 4.30, image load/store), which the stencil modes need to "
-                     "draw the receivers with the programs given to addShadowShaders(); those receivers show the "
-                     "technique's shading instead");
-        use = false;
-    }
-    auto* visibility = static_cast<detail::ScreenVisibility*>(vd.screenVisibility.get());
-    if (use && !visibility) vd.screenVisibility = visibility = new detail::ScreenVisibility;
-    const unsigned int unit = shader::SCREEN_VISIBILITY_IMAGE_UNIT;
-    if (use)
-    {
-        visibility->fit(*viewport);
-        vd.receiverStateSet->setAttributeAndModes(visibility->getBinding(), EYE_PASS_BINDING);
-        vd.receiverPassStateSet->setDefine(shader::DEFINE_VISIBILITY_CLEAR);
-    }
-    else
-    {
-        if (visibility && vd.receiverStateSet->getAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit) ==
-                              visibility->getBinding())
-            vd.receiverStateSet->removeAttribute(osg::StateAttribute::BINDIMAGETEXTURE, unit);
-        vd.receiverPassStateSet->removeDefine(shader::DEFINE_VISIBILITY_CLEAR);
-    }
-    if (vd.stencil)
-        vd.stencil->setScreenVisibility(use ? visibility->getBarrier() : nullptr,
-                                        use ? visibility->getFinalPass() : nullptr);
-    return use;
-}
-
 void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
 {
     osg::StateSet& ss = *vd.receiverStateSet;
@@ -1365,7 +1196,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
     }
 }
 
-std::vector<SilhouetteShadowTechnique::FoundLight> SilhouetteShadowTechnique::collectLights(
+std::vector<FoundLight> SilhouetteShadowTechnique::collectLights(
     osgUtil::CullVisitor& cv, std::vector<int>& refused) const
 {
     std::vector<FoundLight> lights;
@@ -1462,23 +1293,6 @@ void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPas
     cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
     pass.samples->culled(); // one more build to count (or the blocker queries alone: not empty)
     pass.depthCamera->accept(cv);
-    cv.setTraversalMask(mask);
-}
-
-void SilhouetteShadowTechnique::cullSilhouettePass(osgUtil::CullVisitor& cv, LightPass& pass,
-                                                   const LightDescription& light, const std::vector<Caster>& casters,
-                                                   bool depthComparison)
-{
-    if (!pass.silhouettePass || pass.silhouettePass->getMapSize() != _shadowMapSize)
-    {
-        std::string name = pass.depthCamera->getName();
-        name.replace(name.find("depth pass"), std::strlen("depth pass"), "silhouette map");
-        pass.silhouettePass = new SilhouetteMapPass(_shadowMapSize, *_silhouetteMapStateSet, name);
-    }
-    pass.silhouettePass->setDepthComparison(depthComparison);
-    const unsigned int mask = cv.getTraversalMask();
-    cv.setTraversalMask(~0u); // the pass draws only its edges, whatever the view's mask
-    pass.silhouettePass->cull(cv, pass.frustum, pass.depthTexture.get(), casters, light.homogeneous());
     cv.setTraversalMask(mask);
 }
 

@@ -1,0 +1,19 @@
+#include "ModePass.h"
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+osg::ref_ptr<ModePass> createModePass(SilhouetteShadowTechnique::Mode mode)
+{
+    switch (mode)
+    {
+    case SilhouetteShadowTechnique::SILHOUETTE_MAP: return createSilhouetteModePass();
+    case SilhouetteShadowTechnique::SHADOW_VOLUME: return createVolumeModePass();
+    case SilhouetteShadowTechnique::HYBRID: return createHybridModePass();
+    case SilhouetteShadowTechnique::SHADOW_MAP: break;
+    }
+    return new ModePass; // SHADOW_MAP: the depth maps alone
+}
+
+} // namespace detail
+} // namespace osgShadowSilhouette

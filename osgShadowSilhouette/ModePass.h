@@ -1,0 +1,159 @@
+// Internal: the passes of one mode behind one small interface. The technique culls the
+// receivers, finds the lights, assigns slots and renders each slot's depth map; a ModePass
+// adds what its mode draws besides: per frame (its method, the eye pass's configuration),
+// per slot after the depth pass (silhouette maps, triangle lists, edge masks), and after
+// every light (the stencil passes over the eye's receivers). docs/architecture.md.
+#ifndef OSGSHADOWSILHOUETTE_MODEPASS_H
+#define OSGSHADOWSILHOUETTE_MODEPASS_H
+
+#include "EyePass.h"
+#include "FrameData.h"
+
+#include <osg/Referenced>
+#include <osgShadow/ShadowedScene>
+#include <osgUtil/CullVisitor>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+/** The technique's one-time warnings (SilhouetteShadowTechnique::warnOnce()). */
+enum WarningKey
+{
+    WARN_OVER_BUDGET = 1,
+    WARN_NO_LIGHT,
+    WARN_MAP_SIZE,
+    WARN_NO_STENCIL,
+    WARN_FACE_SLOTS,
+    WARN_NO_TRIANGLE_LISTS,
+    WARN_LIST_SLOTS,
+    WARN_LIST_OVERFLOW,
+    WARN_LIST_FULL,
+    WARN_CONTEXT_MAP_SIZE,
+    WARN_LIGHT_NUM,
+    WARN_DEBUG_LIGHT,
+    WARN_SCREEN_VISIBILITY,
+    WARN_BLENDED_VISIBILITY,
+};
+
+/** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
+ *  win over the model's state on the same units: a model's texture on a map's unit would
+ *  replace the map, its image or storage-buffer binding the lists. The receiver shading reads
+ *  none of the model's units there; a program of the model's own that does needs another
+ *  BaseTextureUnit. The maps' textures give up OVERRIDE where the ShadowSettings'
+ *  UseOverrideForShadowMapTexture is false (SilhouetteShadowTechnique::mapBinding()). */
+constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+
+/** What a mode's passes read of the technique in one cull: the properties in effect and
+ *  the state init() built. The technique fills it; the passes never write it. */
+struct PassSettings
+{
+    SilhouetteShadowTechnique::Mode mode = SilhouetteShadowTechnique::SHADOW_MAP; ///< getMode() (warnings name it)
+    unsigned int shadowMapSize = 0;
+    bool blockerCulling = true;
+    bool hybridEdgeMask = true;
+    SilhouetteShadowTechnique::HybridMethod hybridMethod = SilhouetteShadowTechnique::HYBRID_AUTO;
+    SilhouetteShadowTechnique::DebugView debugView = SilhouetteShadowTechnique::DEBUG_NONE;
+    unsigned int debugLight = 0;
+    SilhouetteShadowTechnique::Tuning tuning;
+    unsigned int listSlots = 1;       ///< slots that can have triangle lists
+    bool recordingStats = false;      ///< setStats() has a live target
+    bool applicationPrograms = false; ///< a program given to addShadowShaders() lives
+    osgShadow::ShadowedScene* shadowedScene = nullptr;
+    osg::StateSet* silhouetteMapStateSet = nullptr;
+    osg::StateSet* listStateSet = nullptr;
+    osg::StateSet* listFrontOnlyStateSet = nullptr;
+    ListedDrawables* listedDrawables = nullptr;
+    osg::Program* stencilProgram = nullptr;
+    osg::Program* volumeProgram = nullptr;
+    osg::Texture2D* defaultSilhouetteTexture = nullptr;    ///< an edge mask without edges
+    osg::Texture2D* defaultNeighbourhoodTexture = nullptr; ///< a neighbourhood map without edges
+};
+
+/** What the passes call back in the technique. */
+struct PassServices
+{
+    std::function<void(int key, const std::string& message)> warnOnce;
+    /** Culls the eye's receivers under the view's receiver state and @p pass. */
+    std::function<void(osg::StateSet* pass)> cullReceivers;
+    /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */
+    std::function<void(bool hybrid, bool lists)> warnAlphaTested;
+};
+
+/** One cull of one view, as a mode's passes see it. */
+struct ModeFrame
+{
+    osgUtil::CullVisitor& cv;
+    ViewData& vd;
+    FrameContext& frame;
+    SilhouetteShadowTechnique::Statistics& stats;
+    EyePassPlan& eye;
+    const PassSettings& settings;
+    const PassServices& services;
+};
+
+/** One slot after its depth pass. */
+struct SlotCull
+{
+    const LightDescription& light;
+    unsigned int slot;
+    LightPass& pass;
+    bool depthRendered;         ///< the depth map was drawn this frame (not kept from an earlier one)
+    osg::Texture2D*& secondMap; ///< the slot's silhouette map or edge mask, for the eye pass
+};
+
+/** The passes one mode adds to the technique's. Stateless: a view's state lives in its
+ *  ViewData and LightPass, so one ModePass serves every view and thread. */
+class ModePass : public osg::Referenced
+{
+public:
+    /** Whether each slot has a depth map (every mode but SHADOW_VOLUME). */
+    virtual bool drawsMaps() const { return true; }
+    /** Whether the maps hold raw depths, compared by the eye pass (SILHOUETTE_MAP), not
+     *  through hardware comparison. */
+    virtual bool rawDepthMaps() const { return false; }
+    /** The texture the slots' second units hold where a slot has no map of its own
+     *  (SILHOUETTE_MAP's neighbourhood maps, HYBRID's edge masks); null: the mode binds none. */
+    virtual osg::Texture2D* defaultSecondMap(const PassSettings&) const { return nullptr; }
+    /** Before the lights, once the slots are planned (frame.slotsInUse): the frame's method
+     *  (frame.triangleLists, frame.stencil) and the eye pass's configuration of the mode. */
+    virtual void planFrame(ModeFrame&) {}
+    /** Whether the slot's passes besides the depth map still suit the settings; false makes
+     *  the slot render again even where its depth map could be kept. */
+    virtual bool keepsSlotPasses(const LightPass&, const PassSettings&) const { return true; }
+    /** Before a slot's depth pass: what the depth camera draws besides the casters (HYBRID's
+     *  blocker queries), or null. */
+    virtual osg::Node* depthPassQueries(ModeFrame&, LightPass&) { return nullptr; }
+    /** After a slot's depth pass: the mode's own light-space passes, and the slot's second map. */
+    virtual void cullSlot(ModeFrame&, SlotCull&) {}
+    /** After every light's slots: the passes over the eye's receivers. */
+    virtual void cullEyePasses(ModeFrame&, const std::vector<FoundLight>&, const std::vector<int>& /*slots*/) {}
+};
+
+/** The passes of @p mode: SHADOW_MAP's are the technique's depth maps alone (ModePass
+ *  itself); the others' are in a file each (SilhouetteMode.cpp, VolumeMode.cpp, HybridMode.cpp). */
+osg::ref_ptr<ModePass> createModePass(SilhouetteShadowTechnique::Mode mode);
+osg::ref_ptr<ModePass> createSilhouetteModePass();
+osg::ref_ptr<ModePass> createVolumeModePass();
+osg::ref_ptr<ModePass> createHybridModePass();
+
+/** Culls a slot's silhouette-map pass (after its depth pass), reading the depth map raw
+ *  (SILHOUETTE_MAP) or, with @p depthComparison (HYBRID's edge mask), through its comparison. */
+void cullSilhouettePass(ModeFrame& mf, LightPass& pass, const LightDescription& light, bool depthComparison);
+
+/** The stencil passes (volumes, masks, light passes) of SHADOW_VOLUME and HYBRID's stencil
+ *  volumes over the eye's receivers, and their statistics. */
+void cullStencilPasses(ModeFrame& mf, bool hybrid, const std::vector<FoundLight>& lights,
+                       const std::vector<int>& slots);
+
+/** Whether this frame's stencil passes leave a screen-space visibility for the receivers'
+ *  own programs (and sets the view's passes up for it, or takes it down). */
+bool cullScreenVisibility(ModeFrame& mf);
+
+} // namespace detail
+} // namespace osgShadowSilhouette
+
+#endif
