@@ -110,6 +110,7 @@ struct SlotPlan
     std::vector<int> slots;
     std::vector<std::vector<LightFrustum>> frusta;
     std::vector<unsigned int> firstFaceSlot;
+    unsigned int slotsInUse = 0; ///< slots 0 .. slotsInUse-1 hold the lights and their cube faces
 };
 
 } // namespace detail

@@ -8,6 +8,7 @@
 
 #include "EyePass.h"
 #include "FrameData.h"
+#include "Warnings.h"
 
 #include <osg/Referenced>
 #include <osgShadow/ShadowedScene>
@@ -19,25 +20,6 @@
 
 namespace osgShadowSilhouette {
 namespace detail {
-
-/** The technique's one-time warnings (SilhouetteShadowTechnique::warnOnce()). */
-enum WarningKey
-{
-    WARN_OVER_BUDGET = 1,
-    WARN_NO_LIGHT,
-    WARN_MAP_SIZE,
-    WARN_NO_STENCIL,
-    WARN_FACE_SLOTS,
-    WARN_NO_TRIANGLE_LISTS,
-    WARN_LIST_SLOTS,
-    WARN_LIST_OVERFLOW,
-    WARN_LIST_FULL,
-    WARN_CONTEXT_MAP_SIZE,
-    WARN_LIGHT_NUM,
-    WARN_DEBUG_LIGHT,
-    WARN_SCREEN_VISIBILITY,
-    WARN_BLENDED_VISIBILITY,
-};
 
 /** The eye pass's own bindings (shadow maps, silhouette maps and edge masks, HYBRID's lists)
  *  win over the model's state on the same units: a model's texture on a map's unit would
@@ -76,7 +58,7 @@ struct PassSettings
 /** What the passes call back in the technique. */
 struct PassServices
 {
-    std::function<void(int key, const std::string& message)> warnOnce;
+    Warn warnOnce;
     /** Culls the eye's receivers under the view's receiver state and @p pass. */
     std::function<void(osg::StateSet* pass)> cullReceivers;
     /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */

@@ -4,6 +4,7 @@
 
 #include "EyePass.h"
 #include "FrameData.h"
+#include "LightPlanning.h"
 #include "ModePass.h"
 #include "RenderLeaves.h"
 #include "ScreenVisibility.h"
@@ -737,14 +738,14 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     _renderedMode = int(frame.mode);
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
     else prepareFrame(cv, frame);
-    warnAboutMissingLights(lights);
+    detail::warnAboutMissingLights(lights, _lightNum, _debugView != DEBUG_NONE, _debugLight, warner());
     const SlotPlan plan = planSlots(frame, lights, stats);
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
     // The mode's passes: its method and configuration, its passes per slot, then over the eye.
     const detail::PassSettings settings = passSettings();
     detail::PassServices services;
-    services.warnOnce = [this](int key, const std::string& message) { warnOnce(key, message); };
+    services.warnOnce = warner();
     services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
     services.warnAlphaTested = [this](bool hybrid, bool lists) {
         if (!_alphaTested.empty()) warnAlphaTested(hybrid, lists);
@@ -762,7 +763,8 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisitor& cv, ViewData& vd, Statistics& stats)
 {
     std::vector<int> refused;
-    std::vector<FoundLight> lights = collectLights(cv, refused);
+    std::vector<FoundLight> lights = detail::collectLights(
+        cv, refused, [&](const osg::Light& light, const std::string& refusal) { warnRefusedLight(cv, light, refusal); });
     // The receiver shading lights only the lights found (oss_lightIndex); drawables under a
     // program of their own, or all with UseDefaultShading false, are lit by OpenGL, which
     // would spread a refused light's NaN: its GL light is turned off for them.
@@ -781,29 +783,20 @@ std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisit
 SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::vector<FoundLight>& lights,
                                               Statistics& stats) const
 {
-    // Lights whose cone or range misses what the view sees cost nothing: no passes, no slot.
-    std::vector<bool> reaches(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i)
-    {
-        reaches[i] = lightReachesRegion(lights[i].description, frame.region);
-        if (!reaches[i] && castsShadow(lights[i])) ++stats.lightsSkipped;
-    }
-    SlotPlan plan;
-    plan.slots = assignShadowSlots(lights, reaches);
-    // Each light's frusta; cube faces of point lights take the slots after the lights' own.
-    unsigned int nextFreeSlot = 0;
-    for (int slot : plan.slots) nextFreeSlot = std::max(nextFreeSlot, static_cast<unsigned int>(slot + 1));
-    plan.frusta.resize(lights.size());
-    plan.firstFaceSlot.assign(lights.size(), 0);
-    for (std::size_t i = 0; i < lights.size(); ++i)
-    {
-        if (plan.slots[i] < 0) continue;
-        plan.firstFaceSlot[i] = nextFreeSlot;
-        plan.frusta[i] = planLightFrusta(frame, lights[i].description, nextFreeSlot,
-                                         slotCapacity(pairedSlots(frame.mode)));
-    }
-    frame.slotsInUse = nextFreeSlot;
+    detail::SlotBudget budget;
+    budget.lightNum = _lightNum;
+    budget.maxShadowLights = _maxShadowLights;
+    budget.mapSize = _shadowMapSize;
+    budget.slotLimit = slotCapacity(pairedSlots(frame.mode));
+    budget.cubeFaces = frame.mode != SHADOW_VOLUME; // the volumes reach every direction
+    SlotPlan plan = detail::planSlots(frame, lights, budget, warner(), stats.lightsSkipped);
+    frame.slotsInUse = plan.slotsInUse;
     return plan;
+}
+
+detail::Warn SilhouetteShadowTechnique::warner() const
+{
+    return [this](int key, const std::string& message) { warnOnce(key, message); };
 }
 
 detail::PassSettings SilhouetteShadowTechnique::passSettings() const
@@ -927,46 +920,6 @@ unsigned int SilhouetteShadowTechnique::listSlots() const
     return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity(true));
 }
 
-void SilhouetteShadowTechnique::warnAboutMissingLights(const std::vector<FoundLight>& lights) const
-{
-    std::string found;
-    for (const FoundLight& l : lights) found += (found.empty() ? "" : ", ") + std::to_string(l.description.lightNum);
-    const std::string what = lights.empty() ? "the view has no light" : "the view's GL lights are " + found;
-    const bool named = std::any_of(lights.begin(), lights.end(),
-                                   [&](const FoundLight& l) { return l.description.lightNum == _lightNum; });
-    if (_lightNum >= 0 && !named)
-        warnOnce(WARN_LIGHT_NUM, "LightNum " + std::to_string(_lightNum) + " names no light (" + what +
-                                     "); nothing casts a shadow (LightNum -1: every light)");
-    if (_debugView != DEBUG_NONE && _debugLight >= lights.size())
-        warnOnce(WARN_DEBUG_LIGHT, "DebugLight " + std::to_string(_debugLight) + " is not a light of the view (" +
-                                       std::to_string(lights.size()) + " found, DebugLight counts from 0); the " +
-                                       "debug view shows it unlit");
-}
-
-bool SilhouetteShadowTechnique::castsShadow(const FoundLight& light) const
-{
-    return _lightNum < 0 || light.description.lightNum == _lightNum;
-}
-
-std::vector<int> SilhouetteShadowTechnique::assignShadowSlots(const std::vector<FoundLight>& lights,
-                                                              const std::vector<bool>& reaches) const
-{
-    std::vector<int> slots(lights.size(), -1);
-    unsigned int slot = 0;
-    for (std::size_t i = 0; i < lights.size(); ++i)
-    {
-        if (!castsShadow(lights[i]) || !reaches[i]) continue;
-        if (slot >= _maxShadowLights)
-        {
-            warnOnce(WARN_OVER_BUDGET, "more shadow-casting lights than MaxShadowLights (" +
-                                           std::to_string(_maxShadowLights) + "); the rest are lit unshadowed");
-            break;
-        }
-        slots[i] = static_cast<int>(slot++);
-    }
-    return slots;
-}
-
 void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
 {
     const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
@@ -984,42 +937,12 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
     if (!casters.billboards.empty())
         frame.billboards = std::make_shared<const BillboardMatrices>(std::move(casters.billboards));
     for (const osg::Drawable* drawable : frame.nonFinite) warnNonFinite(*drawable);
-    frame.region = visibleReceiverRegion(cv, frame.receivers);
+    // ShadowSettings' MaximumShadowMapDistance bounds the maps' eye range; the volumes reach any distance.
+    frame.region = detail::visibleReceiverRegion(cv, frame.receivers, settings->getComputeNearFarModeOverride(),
+                                                 frame.mode != SHADOW_VOLUME ? _maximumShadowDistance : DBL_MAX);
     if (frame.mode != SHADOW_MAP)
         frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
                                           *_meshCache, frame.view);
-}
-
-std::vector<LightFrustum> SilhouetteShadowTechnique::planLightFrusta(const FrameContext& frame,
-                                                                     const LightDescription& light,
-                                                                     unsigned int& nextFreeSlot,
-                                                                     unsigned int slotLimit) const
-{
-    std::vector<LightFrustum> frusta;
-    if (frame.mode != SHADOW_VOLUME && light.type == LightDescription::POINT && needsCubeFaces(light, frame.region))
-    {
-        // Only the faces where a caster that can shadow a receiver lies: a flat caster (a
-        // ground) that every receiver stands on or above, seen from the light, shadows nothing.
-        std::vector<osg::BoundingBoxd> parts;
-        for (const CasterPart& part : frame.casterParts)
-            if (canShadow(light, part, frame.receivers)) parts.push_back(part.box);
-        if (parts.empty() && !frame.casterParts.empty())
-            return {LightFrustum()}; // nothing to shadow: the light is lit unshadowed
-        frusta = fitCubeFaces(light, frame.region, frame.casters, _shadowMapSize,
-                              frame.casterParts.empty() ? nullptr : &parts);
-        if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > slotLimit)
-        {
-            warnOnce(WARN_FACE_SLOTS, "light " + std::to_string(light.lightNum) + " needs " +
-                                          std::to_string(frusta.size()) + " cube faces and only " +
-                                          std::to_string(slotLimit - nextFreeSlot + 1) + " of the " +
-                                          std::to_string(slotLimit) +
-                                          " shadow slots are free; it gets one perspective map (see BaseTextureUnit)");
-            frusta.clear();
-        }
-    }
-    if (frusta.empty()) frusta.push_back(fitLightFrustum(light, frame.region, frame.casters));
-    if (frusta.size() > 1) nextFreeSlot += static_cast<unsigned int>(frusta.size() - 1);
-    return frusta;
 }
 
 void SilhouetteShadowTechnique::cullLight(ModeFrame& mf, ModePass& mode, const LightDescription& light,
@@ -1194,95 +1117,6 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
                                            mapBinding());
     }
-}
-
-std::vector<FoundLight> SilhouetteShadowTechnique::collectLights(
-    osgUtil::CullVisitor& cv, std::vector<int>& refused) const
-{
-    std::vector<FoundLight> lights;
-    osgUtil::RenderStage* stage = cv.getCurrentRenderBin()->getStage();
-    osgUtil::PositionalStateContainer* psc = stage ? stage->getPositionalStateContainer() : nullptr;
-    if (!psc) return lights;
-
-    // Light positions are stored with the model-view matrix at their LightSource (null:
-    // already in eye coordinates); "world" here is the ShadowedScene's own frame.
-    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
-    for (const auto& attrMatrix : psc->getAttrMatrixList())
-    {
-        const osg::Light* light = dynamic_cast<const osg::Light*>(attrMatrix.first.get());
-        if (!light) continue;
-        const osg::Matrixd lightToWorld =
-            attrMatrix.second.valid() ? osg::Matrixd(*attrMatrix.second) * eyeToWorld : eyeToWorld;
-        FoundLight found;
-        found.light = light;
-        std::string refusal;
-        const bool usable = LightDescription::fromLight(*light, lightToWorld, found.description, &refusal);
-        if (!usable) warnRefusedLight(cv, *light, refusal);
-        // Positional state is applied in this order, so of two lights with one number (say
-        // the viewer's headlight and the scene's light 0) the last is the one GL lights with.
-        const int num = light->getLightNum();
-        lights.erase(std::remove_if(lights.begin(), lights.end(),
-                                    [&](const FoundLight& l) { return l.description.lightNum == num; }),
-                     lights.end());
-        refused.erase(std::remove(refused.begin(), refused.end(), num), refused.end());
-        if (!usable)
-            refused.push_back(num);
-        else if (num < shader::MAX_SCENE_LIGHTS)
-            lights.push_back(found);
-    }
-    std::sort(lights.begin(), lights.end(), [](const FoundLight& a, const FoundLight& b) {
-        return a.description.lightNum < b.description.lightNum;
-    });
-    return lights;
-}
-
-std::vector<osg::Vec3d> SilhouetteShadowTechnique::visibleReceiverRegion(osgUtil::CullVisitor& cv,
-                                                                          const osg::BoundingBoxd& receivers) const
-{
-    if (!receivers.valid()) return {};
-    double zNear = cv.getCalculatedNearPlane();
-    double zFar = cv.getCalculatedFarPlane();
-    const osg::Matrixd& projection = *cv.getProjectionMatrix();
-    if (cv.getComputeNearFarMode() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR &&
-        _shadowedScene->getShadowSettings()->getComputeNearFarModeOverride() == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR)
-    {
-        const std::array<osg::Vec3d, 8> c = frustumCorners(osg::Matrixd(), projection);
-        zNear = -c[0].z(), zFar = -c[4].z();
-    }
-    if (!std::isfinite(zNear) || !std::isfinite(zFar))
-    {
-        // A drawable with non-finite vertices (left out of casting) gave the view a
-        // non-finite depth range: take the receivers' own depth range instead.
-        zNear = std::numeric_limits<double>::max(), zFar = -zNear;
-        const osg::Matrixd& modelView = *cv.getModelViewMatrix();
-        for (unsigned int i = 0; i < 8; ++i)
-        {
-            const double z = -(receivers.corner(i) * modelView).z();
-            zNear = std::min(zNear, z), zFar = std::max(zFar, z);
-        }
-        zNear = std::max(zNear, 0.0);
-    }
-    if (_maximumShadowDistance < zFar && effectiveModeFor(cv) != SHADOW_VOLUME)
-    {
-        // ShadowSettings' MaximumShadowMapDistance: the maps cover the eye range up to it,
-        // as in ViewDependentShadowMap; beyond, the receivers fall outside them (lit). A
-        // distance before the near plane leaves nothing to cover.
-        zFar = _maximumShadowDistance;
-    }
-    if (!(zNear <= zFar) || !std::isfinite(zNear) || !std::isfinite(zFar) || zFar <= 0.0) return {}; // nothing visible
-    zNear = std::max(zNear, zFar * 1e-6);
-    const double margin = 1e-3 * (zFar - zNear) + 1e-6 * zFar;
-    const osg::Matrixd fitted = withDepthRange(projection, std::max(zNear - margin, zNear * 0.5), zFar + margin);
-    return visibleRegion(frustumCorners(*cv.getModelViewMatrix(), fitted), receivers);
-}
-
-LightFrustum SilhouetteShadowTechnique::fitLightFrustum(const LightDescription& light,
-                                                        const std::vector<osg::Vec3d>& region,
-                                                        const osg::BoundingBoxd& casters) const
-{
-    if (light.type == LightDescription::DIRECTIONAL)
-        return fitDirectionalFrustum(light.direction, region, casters, _shadowMapSize);
-    return fitPerspectiveFrustum(light, region, casters);
 }
 
 void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPass& pass)
