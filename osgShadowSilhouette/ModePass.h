@@ -35,6 +35,9 @@ struct PassSettings
 {
     SilhouetteShadowTechnique::Mode mode = SilhouetteShadowTechnique::SHADOW_MAP; ///< getMode() (warnings name it)
     unsigned int shadowMapSize = 0;
+    unsigned int glGeneration = 0;      ///< maps rendered under another generation hold nothing
+    float polygonOffsetFactor = 0.0f;   ///< the depth passes' offset for the mode rendered
+    float polygonOffsetUnits = 0.0f;
     bool blockerCulling = true;
     bool hybridEdgeMask = true;
     SilhouetteShadowTechnique::HybridMethod hybridMethod = SilhouetteShadowTechnique::HYBRID_AUTO;

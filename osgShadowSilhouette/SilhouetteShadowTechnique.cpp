@@ -4,6 +4,7 @@
 
 #include "EyePass.h"
 #include "FrameData.h"
+#include "DepthMapPass.h"
 #include "LightPlanning.h"
 #include "ModePass.h"
 #include "RenderLeaves.h"
@@ -82,38 +83,6 @@ bool acceptValue(const char* name, T value, T kept)
              << std::endl;
     return false;
 }
-
-osg::ref_ptr<osg::Texture2D> createDepthTexture(unsigned int size)
-{
-    osg::ref_ptr<osg::Texture2D> t = new osg::Texture2D;
-    t->setTextureSize(size, size);
-    t->setInternalFormat(GL_DEPTH_COMPONENT24);
-    t->setSourceFormat(GL_DEPTH_COMPONENT);
-    t->setSourceType(GL_FLOAT);
-    t->setShadowComparison(true);
-    t->setShadowCompareFunc(osg::Texture::LEQUAL);
-    t->setShadowTextureMode(osg::Texture::LUMINANCE);
-    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR); // 2x2 hardware PCF
-    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER);
-    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
-    t->setBorderColor(osg::Vec4d(1.0, 1.0, 1.0, 1.0)); // outside the map: lit
-    return t;
-}
-
-/** A 1x1 depth texture at the far plane: every lookup is lit. Bound to unused shadow slots. */
-osg::ref_ptr<osg::Texture2D> createLitTexture()
-{
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT);
-    *reinterpret_cast<float*>(image->data()) = 1.0f;
-    osg::ref_ptr<osg::Texture2D> t = createDepthTexture(1);
-    t->setImage(image.get());
-    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
-    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    return t;
-}
-
 
 /** HYBRID's triangle lists: per slot its capacities and projection, and the frames of the
  *  shadow rays' offset and of the lookups' bias. */
@@ -428,12 +397,13 @@ void SilhouetteShadowTechnique::init()
     _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
     _volumeProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_VOLUME_FRAG));
 
-    _depthPassStateSet = createDepthPassStateSet();
+    // Each pass sets its mode's polygon offset factor (cullDepthMap()).
+    _depthPassStateSet = detail::createDepthPassStateSet(getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits);
     _prepassProgram = new osg::Program;
     _prepassProgram->setName("osgShadowSilhouette depth prepass");
     _prepassProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
     _prepassProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
-    _litDummyTexture = createLitTexture();
+    _litDummyTexture = detail::createLitTexture();
     for (osg::Program* program : {_volumeProgram.get(), _prepassProgram.get()}) watchProgramLink(program);
     for (osg::StateSet* ss : {_depthPassStateSet.get(), _listStateSet.get(), _silhouetteMapStateSet.get(),
                               dynamic_cast<osg::StateSet*>(_silhouetteMapStateSet->getUserData())})
@@ -458,29 +428,6 @@ osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createPrepassStateSet() c
     ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested receivers' cut-outs
     ss->setRenderBinDetails(DEPTH_PREPASS_BIN, "RenderBin", osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
-    return ss;
-}
-
-osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createDepthPassStateSet() const
-{
-    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
-    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
-    osg::ref_ptr<osg::Program> program = new osg::Program;
-    program->setName("osgShadowSilhouette depth");
-    program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
-    program->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
-    ss->setAttributeAndModes(program.get(), overrideOn);
-    ss->setAttributeAndModes(new osg::PolygonOffset(getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits),
-                             overrideOn); // each pass sets its mode's factor (cullLightPasses)
-    ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
-    // A caster's own osg::Depth (a blended pane that writes no depth, a decal's ALWAYS)
-    // is the eye's business: every caster writes its depth into the map, as the reference
-    // and the volumes take every triangle as opaque.
-    ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), overrideOn);
-    ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE); // open casters too
-    ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-    ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested casters' cut-outs
     return ss;
 }
 
@@ -681,35 +628,6 @@ ViewData* SilhouetteShadowTechnique::createViewData()
     return vd.release();
 }
 
-LightPass SilhouetteShadowTechnique::createLightPass(unsigned int slot) const
-{
-    LightPass pass;
-    pass.depthTexture = createDepthTexture(_shadowMapSize);
-    osg::ref_ptr<osg::Camera> camera = new osg::Camera;
-    camera->setName("osgShadowSilhouette depth pass " + std::to_string(slot));
-    // The view's eye point for LODs by distance (as osgShadow's techniques do); billboards
-    // are turned after the cull (turnBillboardLeaves).
-    camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF_INHERIT_VIEWPOINT);
-    camera->setRenderOrder(osg::Camera::PRE_RENDER);
-    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
-    camera->setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
-    camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
-    camera->setClearMask(GL_DEPTH_BUFFER_BIT);
-    // Camera::setViewport() stores the viewport in the camera's StateSet: give each camera
-    // its own (shallow) copy of the shared depth-pass state before setting it.
-    camera->setStateSet(new osg::StateSet(*_depthPassStateSet, osg::CopyOp::SHALLOW_COPY));
-    camera->setViewport(0, 0, _shadowMapSize, _shadowMapSize);
-    camera->setDrawBuffer(GL_NONE);
-    camera->setReadBuffer(GL_NONE);
-    camera->attach(osg::Camera::DEPTH_BUFFER, pass.depthTexture.get());
-    camera->setCullCallback(new TraverseShadowedSceneCallback(_shadowedScene));
-    pass.samples = new DrawnSamples;
-    camera->setInitialDrawCallback(pass.samples->createBegin());
-    camera->setFinalDrawCallback(pass.samples->createEnd());
-    pass.depthCamera = camera;
-    return pass;
-}
-
 // ---------------------------------------------------------------------------------------
 // Cull
 
@@ -743,7 +661,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
 
     // The mode's passes: its method and configuration, its passes per slot, then over the eye.
-    const detail::PassSettings settings = passSettings();
+    const detail::PassSettings settings = passSettings(frame.mode);
     detail::PassServices services;
     services.warnOnce = warner();
     services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
@@ -799,11 +717,14 @@ detail::Warn SilhouetteShadowTechnique::warner() const
     return [this](int key, const std::string& message) { warnOnce(key, message); };
 }
 
-detail::PassSettings SilhouetteShadowTechnique::passSettings() const
+detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) const
 {
     detail::PassSettings s;
     s.mode = _mode;
     s.shadowMapSize = _shadowMapSize;
+    s.glGeneration = getGLGeneration();
+    s.polygonOffsetFactor = getEffectivePolygonOffsetFactor(rendered);
+    s.polygonOffsetUnits = _polygonOffsetUnits;
     s.blockerCulling = _blockerCulling;
     s.hybridEdgeMask = _hybridEdgeMask;
     s.hybridMethod = _hybridMethod;
@@ -969,29 +890,12 @@ void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const Li
                                          unsigned int slot, const LightFrustum& frustum, osg::Texture2D*& secondMap)
 {
     ViewData& vd = mf.vd;
-    const bool raw = mode.rawDepthMaps();
     LightPass& pass = vd.passes[slot];
-    // SILHOUETTE_MAP reads raw depths and compares them itself; the other modes sample with
-    // hardware comparison. A texture's comparison mode is fixed at creation: toggling it on a
-    // texture GL already has is not reliably re-applied, so switching rebuilds.
-    if (!pass.depthCamera || pass.depthTexture->getTextureWidth() != int(_shadowMapSize) ||
-        pass.depthTexture->getShadowComparison() == raw)
-    {
-        pass = createLightPass(slot);
-        pass.depthTexture->setShadowComparison(!raw);
-    }
+    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(), *_depthPassStateSet, _shadowedScene);
     pass.frustum = frustum;
     if (!mode.drawsMaps()) return; // volumes only, no map
     vd.slotInUse[slot] = true;
-    osg::Node* queries = mode.depthPassQueries(mf, pass);
-    if (!queries) pass.blockers = nullptr;
-    pass.samples->setEnabled(!queries && frustum.faceCore > 0.0); // one sample query at a time; only faces skip
-    if (pass.depthCamera->getNumChildren() != (queries ? 1u : 0u) || (queries && pass.depthCamera->getChild(0) != queries))
-    {
-        pass.depthCamera->removeChildren(0, pass.depthCamera->getNumChildren());
-        if (queries) pass.depthCamera->addChild(queries);
-    }
-    detail::SlotCull cull{light, slot, pass, cullLightPasses(mf, mode, pass, light), secondMap};
+    detail::SlotCull cull{light, slot, pass, detail::cullDepthMap(mf, mode, pass, light), secondMap};
     vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), mapBinding());
     mode.cullSlot(mf, cull);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
@@ -1003,46 +907,6 @@ void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const Li
                                                 : pass.samples->drewNothing());
     if (vd.slotSkipped[slot]) ++mf.stats.slotsSkipped;
     if (pass.samples->getEnabled() && pass.samples->pending()) pass.samples->getPollNode()->accept(mf.cv);
-}
-
-bool SilhouetteShadowTechnique::cullLightPasses(ModeFrame& mf, const ModePass& mode, LightPass& pass,
-                                                const LightDescription& light)
-{
-    const FrameContext& frame = mf.frame;
-    PassInputs inputs;
-    inputs.valid = true;
-    inputs.glGeneration = getGLGeneration();
-    inputs.mode = frame.mode;
-    inputs.casters = frame.casterSignature;
-    inputs.view = pass.frustum.view;
-    inputs.projection = pass.frustum.projection;
-    inputs.light = light.homogeneous();
-    inputs.polygonOffsetFactor = getEffectivePolygonOffsetFactor(frame.mode);
-    const bool reuse = inputs == pass.rendered && mode.keepsSlotPasses(pass, mf.settings);
-    if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
-    {
-        scene->setCasters(!reuse);
-        scene->setExcluded(frame.nonFinite);
-        scene->setBillboards(frame.billboards);
-    }
-    pass.depthCamera->setClearMask(reuse ? 0 : GL_DEPTH_BUFFER_BIT);
-    if (reuse)
-    {
-        if (pass.depthCamera->getNumChildren() > 0) cullDepthPass(mf.cv, pass); // the blocker queries alone
-        ++mf.stats.depthPassesReused;
-        ++mf.stats.shadowPasses; // in use, kept from an earlier frame
-        return false;
-    }
-    const float factor = inputs.polygonOffsetFactor;
-    osg::StateSet* depthState = pass.depthCamera->getStateSet(); // the pass's own (shallow) copy
-    const auto* offset = dynamic_cast<const osg::PolygonOffset*>(depthState->getAttribute(osg::StateAttribute::POLYGONOFFSET));
-    if (!offset || offset->getFactor() != factor || offset->getUnits() != _polygonOffsetUnits)
-        depthState->setAttributeAndModes(new osg::PolygonOffset(factor, _polygonOffsetUnits),
-                                         osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-    cullDepthPass(mf.cv, pass);
-    ++mf.stats.shadowPasses;
-    pass.rendered = inputs;
-    return true;
 }
 
 void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
@@ -1117,17 +981,6 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
                                            mapBinding());
     }
-}
-
-void SilhouetteShadowTechnique::cullDepthPass(osgUtil::CullVisitor& cv, LightPass& pass)
-{
-    pass.depthCamera->setViewMatrix(pass.frustum.view);
-    pass.depthCamera->setProjectionMatrix(pass.frustum.projection);
-    const unsigned int mask = cv.getTraversalMask();
-    cv.setTraversalMask(mask & _shadowedScene->getShadowSettings()->getCastsShadowTraversalMask());
-    pass.samples->culled(); // one more build to count (or the blocker queries alone: not empty)
-    pass.depthCamera->accept(cv);
-    cv.setTraversalMask(mask);
 }
 
 void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd,
