@@ -6,6 +6,7 @@
 #include "FrameData.h"
 #include "DepthMapPass.h"
 #include "LightPlanning.h"
+#include "ViewState.h"
 #include "ModePass.h"
 #include "RenderLeaves.h"
 #include "ScreenVisibility.h"
@@ -82,23 +83,6 @@ bool acceptValue(const char* name, T value, T kept)
                                     keeping.str())
              << std::endl;
     return false;
-}
-
-/** HYBRID's triangle lists: per slot its capacities and projection, and the frames of the
- *  shadow rays' offset and of the lookups' bias. */
-void createListUniforms(ViewData& vd, unsigned int slots)
-{
-    // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
-    // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
-    vd.listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
-    vd.listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
-    for (unsigned int slot = 0; slot < slots; ++slot)
-    {
-        vd.listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
-        vd.listPerspective->setElement(slot, 0);
-    }
-    vd.listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
-    vd.lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
 }
 
 } // namespace
@@ -572,60 +556,17 @@ ViewData* SilhouetteShadowTechnique::getViewData(osgUtil::CullVisitor& cv)
 
 ViewData* SilhouetteShadowTechnique::createViewData()
 {
-    osg::ref_ptr<ViewData> vd = new ViewData;
-    osg::StateSet* ss = new osg::StateSet;
-    vd->receiverStateSet = ss;
-    vd->receiverPassStateSet = new osg::StateSet;
-    vd->receiverPassStateSet->setDataVariance(osg::Object::DYNAMIC); // the stencil modes' program, the prepass's depth
-    vd->prepassStateSet = createPrepassStateSet();
-    if (_useDefaultShading) ss->setAttributeAndModes(_receiverProgram.get(), osg::StateAttribute::ON);
-    const unsigned int slots = slotCapacity();
-    ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(_maxShadowLights));
-    ss->setDataVariance(osg::Object::DYNAMIC); // its defines, bindings and uniforms change per frame
-
-    vd->numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
-    vd->lightIndex = new osg::Uniform(osg::Uniform::INT, shader::LIGHT_INDEX, shader::MAX_SCENE_LIGHTS);
-    vd->shadowSlot = new osg::Uniform(osg::Uniform::INT, shader::SHADOW_SLOT, shader::MAX_SCENE_LIGHTS);
-    vd->eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, slots);
-    vd->slotOwner = new osg::Uniform(osg::Uniform::INT, shader::SLOT_OWNER, slots);
-    vd->slotCore = new osg::Uniform(osg::Uniform::FLOAT, shader::SLOT_CORE, slots);
-    vd->maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
-    osg::ref_ptr<osg::Uniform> samplers =
-        new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, slots);
-    osg::ref_ptr<osg::Uniform> silhouetteSamplers =
-        new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, slots);
-    const unsigned int paired = slotCapacity(true);
-    for (unsigned int slot = 0; slot < slots; ++slot)
-    {
-        samplers->setElement(slot, int(_baseTextureUnit + slot));
-        // Only the paired modes declare silhouette samplers, OSS_MAX_SHADOW_SLOTS = `paired` of
-        // them: the elements after those are never read (a valid unit all the same).
-        silhouetteSamplers->setElement(slot, int(silhouetteUnit(slot < paired ? slot : 0)));
-        vd->eyeToShadow->setElement(slot, osg::Matrixf());
-        ss->setTextureAttributeAndModes(_baseTextureUnit + slot, _litDummyTexture.get(), mapBinding());
-    }
-    for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
-    {
-        vd->lightIndex->setElement(i, i);
-        vd->shadowSlot->setElement(i, -1);
-    }
-    createListUniforms(*vd, slots);
-    for (osg::Uniform* u : {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(),
-                            vd->maskLight.get(), samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(),
-                            vd->slotCore.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(),
-                            vd->lookupBiasFrame.get()})
-        ss->addUniform(u);
-    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
-    ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
-    ss->addUniform(new osg::Uniform(shader::LOOKUP_BIAS_PER_DISTANCE, shader::LOOKUP_BIAS));
-    ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(_shadowMapSize, _shadowMapSize)));
-    vd->exactCounter = new GpuCounter(GL_ATOMIC_COUNTER_BUFFER);
-    vd->exactBegin = vd->exactCounter->createBeginNode(DEPTH_PREPASS_BIN - 1); // before every receiver
-    vd->exactEnd = vd->exactCounter->createEndNode(COUNT_END_BIN);
-    vd->passes.resize(slots);
-    vd->slotInUse.assign(slots, false);
-    vd->slotSkipped.assign(slots, false);
-    return vd.release();
+    detail::ViewLayout layout;
+    layout.slots = slotCapacity();
+    layout.pairedSlots = slotCapacity(true);
+    layout.baseUnit = _baseTextureUnit;
+    layout.maxShadowLights = _maxShadowLights;
+    layout.mapSize = _shadowMapSize;
+    layout.mapBinding = mapBinding();
+    layout.receiverProgram = _useDefaultShading ? _receiverProgram.get() : nullptr;
+    layout.litTexture = _litDummyTexture.get();
+    layout.prepassStateSet = createPrepassStateSet();
+    return detail::createViewData(layout).release();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -674,7 +615,10 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     prepareEyePass(mf);
     cullShadowSlots(mf, mode, lights, plan);
     mode.cullEyePasses(mf, lights, plan.slots);
-    updateViewUniforms(cv, vd, lights, plan.slots, eye);
+    detail::updateViewUniforms(cv, vd, lights, plan.slots, eye);
+    vd.maskLight->set(static_cast<int>(_debugLight));
+    detail::updateRayFrames(cv, vd, _shadowedScene ? _shadowedScene->getBound() : osg::BoundingSphere(),
+                            _shadowRayOffset);
     finishEyePass(mf);
 }
 
@@ -980,57 +924,6 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
                                            slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
                                            mapBinding());
-    }
-}
-
-void SilhouetteShadowTechnique::updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd,
-                                                   const std::vector<FoundLight>& lights,
-                                                   const std::vector<int>& slots, detail::EyePassPlan& eye)
-{
-    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
-    const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
-    vd.numLights->set(n);
-    // A shadowed light with nothing to shadow is lit as an unshadowed one (slot -1), so the
-    // stencil modes light it in their base pass and the receiver compiles only the slots
-    // up to the last one in use.
-    for (int i = 0; i < n; ++i)
-    {
-        const bool shadowed = slots[i] >= 0 && vd.passes[slots[i]].frustum.valid;
-        vd.lightIndex->setElement(i, lights[i].description.lightNum);
-        vd.shadowSlot->setElement(i, shadowed ? slots[i] : -1);
-    }
-    int used = 0;
-    bool faces = false;
-    for (unsigned int s = 0; s < vd.passes.size(); ++s)
-    {
-        const bool lightSlot = std::find(slots.begin(), slots.end(), int(s)) != slots.end();
-        if (!vd.passes[s].frustum.valid || !(vd.slotInUse[s] || lightSlot)) continue;
-        vd.eyeToShadow->setElement(s, osg::Matrixf(eyeToWorld * vd.passes[s].frustum.worldToTexture()));
-        if (!vd.slotInUse[s]) continue;
-        used = int(s) + 1;
-        faces = faces || vd.passes[s].frustum.faceCore > 0.0;
-    }
-    eye.usedSlots = static_cast<unsigned int>(used);
-    eye.skippedSlots = 0;
-    for (unsigned int s = 0; s < vd.slotSkipped.size() && s < 32; ++s)
-        if (vd.slotInUse[s] && vd.slotSkipped[s]) eye.skippedSlots |= 1u << s;
-    eye.cubeFaces = faces;
-    vd.maskLight->set(static_cast<int>(_debugLight));
-    // The exact test's ray offset and the lookups' depth bias scale with the shadowed scene's
-    // bound, in eye space.
-    const osg::BoundingSphere& bound = _shadowedScene ? _shadowedScene->getBound() : osg::BoundingSphere();
-    if (bound.valid())
-    {
-        const osg::Matrixd& worldToEye = *cv.getModelViewMatrix();
-        const osg::Vec3d centre = bound.center() * worldToEye;
-        const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
-        vd.listRayFrame->set(osg::Vec4f(centre, float(double(_shadowRayOffset) * bound.radius() * scale)));
-        vd.lookupBiasFrame->set(osg::Vec4f(centre, float(double(shader::LOOKUP_BIAS) * bound.radius() * scale)));
-    }
-    else
-    {
-        vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
-        vd.lookupBiasFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
     }
 }
 

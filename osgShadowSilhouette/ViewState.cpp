@@ -1,0 +1,147 @@
+#include "ViewState.h"
+
+#include <osgShadowSilhouette/ShaderConstants>
+
+#include <algorithm>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+namespace {
+
+/** The lights' uniforms: their count, GL numbers and shadow slots, and per slot its
+ *  eye-to-shadow matrix, owner light and cube-face core. */
+void createLightUniforms(ViewData& vd, unsigned int slots)
+{
+    vd.numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
+    vd.lightIndex = new osg::Uniform(osg::Uniform::INT, shader::LIGHT_INDEX, shader::MAX_SCENE_LIGHTS);
+    vd.shadowSlot = new osg::Uniform(osg::Uniform::INT, shader::SHADOW_SLOT, shader::MAX_SCENE_LIGHTS);
+    vd.eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, slots);
+    vd.slotOwner = new osg::Uniform(osg::Uniform::INT, shader::SLOT_OWNER, slots);
+    vd.slotCore = new osg::Uniform(osg::Uniform::FLOAT, shader::SLOT_CORE, slots);
+    vd.maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
+    for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
+    {
+        vd.lightIndex->setElement(i, i);
+        vd.shadowSlot->setElement(i, -1);
+    }
+}
+
+/** HYBRID's triangle lists: per slot its capacities and projection, and the frames of the
+ *  shadow rays' offset and of the lookups' bias. */
+void createListUniforms(ViewData& vd, unsigned int slots)
+{
+    // Triangle lists (HYBRID): per slot its capacities and projection; the buffers are bound
+    // per frame, one shader storage block per slot in use (OSS_MAX_LIST_SLOTS, set in cull).
+    vd.listCapacity = new osg::Uniform(osg::Uniform::UNSIGNED_INT_VEC4, shader::LIST_CAPACITY, slots);
+    vd.listPerspective = new osg::Uniform(osg::Uniform::INT, shader::LIST_SLOT_PERSPECTIVE, slots);
+    for (unsigned int slot = 0; slot < slots; ++slot)
+    {
+        vd.listCapacity->setElement(slot, 0u, 0u, 0u, 0u);
+        vd.listPerspective->setElement(slot, 0);
+    }
+    vd.listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    vd.lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+}
+
+} // namespace
+
+osg::ref_ptr<ViewData> createViewData(const ViewLayout& layout)
+{
+    osg::ref_ptr<ViewData> vd = new ViewData;
+    osg::StateSet* ss = new osg::StateSet;
+    vd->receiverStateSet = ss;
+    vd->receiverPassStateSet = new osg::StateSet;
+    vd->receiverPassStateSet->setDataVariance(osg::Object::DYNAMIC); // the stencil modes' program, the prepass's depth
+    vd->prepassStateSet = layout.prepassStateSet;
+    if (layout.receiverProgram) ss->setAttributeAndModes(layout.receiverProgram, osg::StateAttribute::ON);
+    const unsigned int slots = layout.slots;
+    ss->setDefine(shader::DEFINE_MAX_SHADOW_LIGHTS, std::to_string(layout.maxShadowLights));
+    ss->setDataVariance(osg::Object::DYNAMIC); // its defines, bindings and uniforms change per frame
+
+    createLightUniforms(*vd, slots);
+    osg::ref_ptr<osg::Uniform> samplers = new osg::Uniform(osg::Uniform::SAMPLER_2D_SHADOW, shader::SHADOW_MAP, slots);
+    osg::ref_ptr<osg::Uniform> silhouetteSamplers =
+        new osg::Uniform(osg::Uniform::SAMPLER_2D, shader::SILHOUETTE_MAP, slots);
+    const unsigned int paired = layout.pairedSlots;
+    for (unsigned int slot = 0; slot < slots; ++slot)
+    {
+        samplers->setElement(slot, int(layout.baseUnit + slot));
+        // Only the paired modes declare silhouette samplers, OSS_MAX_SHADOW_SLOTS = `paired` of
+        // them: the elements after those are never read (a valid unit all the same).
+        silhouetteSamplers->setElement(slot, int(layout.baseUnit + paired + (slot < paired ? slot : 0)));
+        vd->eyeToShadow->setElement(slot, osg::Matrixf());
+        ss->setTextureAttributeAndModes(layout.baseUnit + slot, layout.litTexture, layout.mapBinding);
+    }
+    createListUniforms(*vd, slots);
+    for (osg::Uniform* u :
+         {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(), vd->maskLight.get(),
+          samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->listCapacity.get(),
+          vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get()})
+        ss->addUniform(u);
+    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
+    ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
+    ss->addUniform(new osg::Uniform(shader::LOOKUP_BIAS_PER_DISTANCE, shader::LOOKUP_BIAS));
+    ss->addUniform(new osg::Uniform(shader::SHADOW_MAP_SIZE, osg::Vec2f(layout.mapSize, layout.mapSize)));
+    vd->exactCounter = new GpuCounter(GL_ATOMIC_COUNTER_BUFFER);
+    vd->exactBegin =
+        vd->exactCounter->createBeginNode(SilhouetteShadowTechnique::DEPTH_PREPASS_BIN - 1); // before every receiver
+    vd->exactEnd = vd->exactCounter->createEndNode(SilhouetteShadowTechnique::COUNT_END_BIN);
+    vd->passes.resize(slots);
+    vd->slotInUse.assign(slots, false);
+    vd->slotSkipped.assign(slots, false);
+    return vd;
+}
+
+void updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd, const std::vector<FoundLight>& lights,
+                        const std::vector<int>& slots, EyePassPlan& eye)
+{
+    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(*cv.getModelViewMatrix());
+    const int n = std::min<int>(static_cast<int>(lights.size()), shader::MAX_SCENE_LIGHTS);
+    vd.numLights->set(n);
+    // A shadowed light with nothing to shadow is lit as an unshadowed one (slot -1), so the
+    // stencil modes light it in their base pass and the receiver compiles only the slots
+    // up to the last one in use.
+    for (int i = 0; i < n; ++i)
+    {
+        const bool shadowed = slots[i] >= 0 && vd.passes[slots[i]].frustum.valid;
+        vd.lightIndex->setElement(i, lights[i].description.lightNum);
+        vd.shadowSlot->setElement(i, shadowed ? slots[i] : -1);
+    }
+    int used = 0;
+    bool faces = false;
+    for (unsigned int s = 0; s < vd.passes.size(); ++s)
+    {
+        const bool lightSlot = std::find(slots.begin(), slots.end(), int(s)) != slots.end();
+        if (!vd.passes[s].frustum.valid || !(vd.slotInUse[s] || lightSlot)) continue;
+        vd.eyeToShadow->setElement(s, osg::Matrixf(eyeToWorld * vd.passes[s].frustum.worldToTexture()));
+        if (!vd.slotInUse[s]) continue;
+        used = int(s) + 1;
+        faces = faces || vd.passes[s].frustum.faceCore > 0.0;
+    }
+    eye.usedSlots = static_cast<unsigned int>(used);
+    eye.skippedSlots = 0;
+    for (unsigned int s = 0; s < vd.slotSkipped.size() && s < 32; ++s)
+        if (vd.slotInUse[s] && vd.slotSkipped[s]) eye.skippedSlots |= 1u << s;
+    eye.cubeFaces = faces;
+}
+
+void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::BoundingSphere& bound, float shadowRayOffset)
+{
+    if (bound.valid())
+    {
+        const osg::Matrixd& worldToEye = *cv.getModelViewMatrix();
+        const osg::Vec3d centre = bound.center() * worldToEye;
+        const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
+        vd.listRayFrame->set(osg::Vec4f(centre, float(double(shadowRayOffset) * bound.radius() * scale)));
+        vd.lookupBiasFrame->set(osg::Vec4f(centre, float(double(shader::LOOKUP_BIAS) * bound.radius() * scale)));
+    }
+    else
+    {
+        vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+        vd.lookupBiasFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    }
+}
+
+} // namespace detail
+} // namespace osgShadowSilhouette
