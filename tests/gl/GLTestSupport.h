@@ -9,11 +9,14 @@
 
 #include <osg/GLExtensions>
 #include <osg/GraphicsContext>
+#include <osg/Image>
 #include <osgShadow/ShadowedScene>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace osstest {
@@ -123,6 +126,32 @@ inline float contextGLVersion(ShadowedRender& r)
     const osg::State* state = r.renderer->viewer().getCamera()->getGraphicsContext()->getState();
     const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
     return ext ? ext->glVersion : 0.0f;
+}
+
+/** Two RGB colour images of one size compared at the pixels @p judged (pixel index, bottom
+ *  row first) accepts: how many were compared, how many differ by more than 2 of 255 in some
+ *  channel, and the largest difference. */
+struct ColourComparison
+{
+    long long compared = 0, differing = 0;
+    int worst = 0;
+};
+
+template<class Judged>
+ColourComparison compareColours(const osg::Image& a, const osg::Image& b, const Judged& judged)
+{
+    ColourComparison result;
+    const int n = a.s() * a.t();
+    for (int i = 0; i < n; ++i)
+    {
+        if (!judged(i)) continue;
+        ++result.compared;
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.data()[3 * i + c]) - int(b.data()[3 * i + c])));
+        result.worst = std::max(result.worst, d);
+        result.differing += d > 2;
+    }
+    return result;
 }
 
 /** A GL version for a message: "4.1", not the float's 4.0999999. */

@@ -185,24 +185,17 @@ TEST(BlendedReceivers, LitPixelsAgreeWithTheMapModes)
         const Frame other = renderBoth(mode, stencil);
         ASSERT_TRUE(other.colour.valid());
         const int n = lists.colour->s() * lists.colour->t();
-        long long compared = 0, differing = 0;
-        int worst = 0;
-        for (int i = 0; i < n; ++i)
-        {
-            if (!litAround(lists, i)) continue; // by the lists' masks alone: the other's are under test too
-            ++compared;
-            int d = 0;
-            for (int ch = 0; ch < 3; ++ch)
-                d = std::max(d, std::abs(int(lists.colour->data()[3 * i + ch]) - int(other.colour->data()[3 * i + ch])));
-            worst = std::max(worst, d);
-            differing += d > 2;
-        }
+        // Judged by the lists' masks alone: the other's are under test too.
+        const osstest::ColourComparison lit =
+            osstest::compareColours(*lists.colour, *other.colour, [&](int i) { return litAround(lists, i); });
+        const long long compared = lit.compared, differing = lit.differing;
+        const int worst = lit.worst;
         std::cout << mode << (stencil ? " (stencil)" : "") << ": " << compared << " pixels compared, " << differing
                   << " differ, largest difference " << worst << "\n";
         EXPECT_GT(compared, n / 4);
         // The masks say where the nearest surface is lit, not the ground seen through the
         // glass: along the pane's foot, where its shadow on the ground begins, a pixel may
-        // show the ground behind on the other side of that edge (measured: 28 and 23 pixels).
+        // show the ground behind on the other side of that edge (measured: 29 and 31 pixels of 116726).
         EXPECT_LT(differing, compared / 1000) << mode << ": lit pixels shaded differently from HYBRID's triangle lists "
                                               << "(largest difference " << worst << " of 255)";
     }

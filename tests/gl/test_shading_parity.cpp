@@ -159,22 +159,11 @@ protected:
 
 /** Largest channel difference between two frames over the pixels lit, with their
  *  neighbours, in both masks; `differing` counts the pixels that differ by more than 2. */
-int largestLitDifference(const Frame& a, const Frame& b, long long& compared, long long& differing)
+/** The two frames' colours where both masks are lit around the pixel. */
+osstest::ColourComparison compareLit(const Frame& a, const Frame& b)
 {
-    const int n = a.colour->s() * a.colour->t();
-    int worst = 0;
-    compared = differing = 0;
-    for (int i = 0; i < n; ++i)
-    {
-        if (!litAround(a.mask, i) || !litAround(b.mask, i)) continue;
-        ++compared;
-        int d = 0;
-        for (int c = 0; c < 3; ++c)
-            d = std::max(d, std::abs(int(a.colour->data()[3 * i + c]) - int(b.colour->data()[3 * i + c])));
-        worst = std::max(worst, d);
-        differing += d > 2;
-    }
-    return worst;
+    return osstest::compareColours(*a.colour, *b.colour,
+                                   [&](int i) { return litAround(a.mask, i) && litAround(b.mask, i); });
 }
 
 } // namespace
@@ -187,11 +176,10 @@ TEST_P(ShadingParity, LitPixelsAgreeInEveryMode)
     {
         const Frame other = render(mode);
         ASSERT_TRUE(other.colour.valid());
-        long long compared = 0, differing = 0;
-        const int worst = largestLitDifference(base, other, compared, differing);
-        EXPECT_GT(compared, base.colour->s() * base.colour->t() / 4) << mode;
-        EXPECT_EQ(differing, 0) << mode << ": lit pixels shaded differently from SHADOW_VOLUME (largest difference "
-                                << worst << " of 255)";
+        const osstest::ColourComparison lit = compareLit(base, other);
+        EXPECT_GT(lit.compared, base.colour->s() * base.colour->t() / 4) << mode;
+        EXPECT_EQ(lit.differing, 0) << mode << ": lit pixels shaded differently from SHADOW_VOLUME (largest difference "
+                                    << lit.worst << " of 255)";
     }
 }
 
@@ -204,13 +192,12 @@ TEST_P(ShadingParity, ShadowMapDarkensLitSlopesAtMostAsMeasured)
     const Frame base = render("volume");
     const Frame other = render("shadowmap");
     ASSERT_TRUE(base.colour.valid() && other.colour.valid());
-    long long compared = 0, differing = 0;
-    const int worst = largestLitDifference(base, other, compared, differing);
-    EXPECT_GT(compared, base.colour->s() * base.colour->t() / 4);
-    EXPECT_LE(worst, 17) << differing << " lit pixels differ";
-    if (differing > 0)
-        GTEST_SKIP() << "known defect: SHADOW_MAP's PCF darkens " << differing << " lit pixels by up to " << worst
-                     << " of 255 (acne of the 2x2 footprint on lit slopes)";
+    const osstest::ColourComparison lit = compareLit(base, other);
+    EXPECT_GT(lit.compared, base.colour->s() * base.colour->t() / 4);
+    EXPECT_LE(lit.worst, 17) << lit.differing << " lit pixels differ";
+    if (lit.differing > 0)
+        GTEST_SKIP() << "known defect: SHADOW_MAP's PCF darkens " << lit.differing << " lit pixels by up to "
+                     << lit.worst << " of 255 (acne of the 2x2 footprint on lit slopes)";
 }
 
 std::string lookName(const ::testing::TestParamInfo<std::tuple<Look, bool>>& info)
