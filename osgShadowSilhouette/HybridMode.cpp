@@ -77,10 +77,10 @@ bool listsMustGrow(ModeFrame& mf, const TriangleListPass& lists, unsigned int sl
 {
     std::size_t neededNodes = 0, neededTriangles = 0;
     if (!lists.overflowed(neededNodes, neededTriangles)) return false;
+    const std::size_t neededListed = std::min(neededTriangles, TriangleListPass::MAX_TRIANGLES);
     nodes = std::min(neededNodes + neededNodes / 4, TriangleListPass::MAX_NODES);
-    triangles = std::max(triangles, std::min(neededTriangles, TriangleListPass::MAX_TRIANGLES));
-    const bool grow = nodes > lists.getNodeCapacity() ||
-                      std::min(neededTriangles, TriangleListPass::MAX_TRIANGLES) > lists.getTriangleCapacity();
+    triangles = std::max(triangles, neededListed);
+    const bool grow = nodes > lists.getNodeCapacity() || neededListed > lists.getTriangleCapacity();
     mf.services.warnOnce(grow ? WARN_LIST_OVERFLOW : WARN_LIST_FULL,
                          "HYBRID: the triangle lists of shadow slot " + std::to_string(slot) + " needed " +
                              std::to_string(neededNodes) + " nodes and " + std::to_string(neededTriangles) +
@@ -228,11 +228,7 @@ public:
         const PassSettings& settings = mf.settings;
         const bool blockers = settings.blockerCulling && !settings.hybridEdgeMask && !mf.frame.triangleLists &&
                               pass.frustum.faceCore == 0.0;
-        if (!blockers)
-        {
-            pass.blockers = nullptr;
-            return nullptr;
-        }
+        if (!blockers) return nullptr; // and cullDepthMap() drops the slot's queries
         if (!pass.blockers) pass.blockers = new BlockerQueries;
         pass.blockers->update(mf.frame.casterList);
         return pass.blockers->getNode();

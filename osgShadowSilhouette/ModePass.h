@@ -35,8 +35,8 @@ struct PassSettings
 {
     SilhouetteShadowTechnique::Mode mode = SilhouetteShadowTechnique::SHADOW_MAP; ///< getMode() (warnings name it)
     unsigned int shadowMapSize = 0;
-    unsigned int glGeneration = 0;      ///< maps rendered under another generation hold nothing
-    float polygonOffsetFactor = 0.0f;   ///< the depth passes' offset for the mode rendered
+    unsigned int glGeneration = 0;    ///< maps rendered under another generation hold nothing
+    float polygonOffsetFactor = 0.0f; ///< the depth passes' offset for the mode rendered
     float polygonOffsetUnits = 0.0f;
     bool blockerCulling = true;
     bool hybridEdgeMask = true;
@@ -44,9 +44,8 @@ struct PassSettings
     SilhouetteShadowTechnique::DebugView debugView = SilhouetteShadowTechnique::DEBUG_NONE;
     unsigned int debugLight = 0;
     SilhouetteShadowTechnique::Tuning tuning;
-    unsigned int listSlots = 1;       ///< slots that can have triangle lists
-    bool recordingStats = false;      ///< setStats() has a live target
-    bool applicationPrograms = false; ///< a program given to addShadowShaders() lives
+    unsigned int listSlots = 1;  ///< slots that can have triangle lists
+    bool recordingStats = false; ///< setStats() has a live target
     osgShadow::ShadowedScene* shadowedScene = nullptr;
     osg::StateSet* silhouetteMapStateSet = nullptr;
     osg::StateSet* listStateSet = nullptr;
@@ -64,6 +63,9 @@ struct PassServices
     Warn warnOnce;
     /** Culls the eye's receivers under the view's receiver state and @p pass. */
     std::function<void(osg::StateSet* pass)> cullReceivers;
+    /** Whether a program given to addShadowShaders() lives (a lock and a scan: asked only
+     *  where a stencil frame could draw the receivers with their own programs). */
+    std::function<bool()> applicationPrograms;
     /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */
     std::function<void(bool hybrid, bool lists)> warnAlphaTested;
 };

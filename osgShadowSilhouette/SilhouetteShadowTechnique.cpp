@@ -15,26 +15,17 @@
 
 #include <osg/ColorMask>
 #include <osg/Depth>
-#include <osg/ComputeBoundsVisitor>
 #include <osg/LightSource>
-#include <osg/BufferIndexBinding>
-#include <osg/CullFace>
 #include <osg/GLExtensions>
-#include <osg/Image>
-#include <osg/BindImageTexture>
 #include <osg/PolygonOffset>
 #include <osg/Viewport>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
 #include <osgUtil/RenderStage>
-#include <osgUtil/StateGraph>
 
 #include <algorithm>
-#include <unordered_set>
 #include <cmath>
-#include <cstring>
 #include <functional>
-#include <limits>
 #include <sstream>
 
 namespace osgShadowSilhouette {
@@ -45,7 +36,6 @@ using detail::boundsOf;
 using detail::CasterSignatureVisitor;
 using detail::prunePrepass;
 using detail::TagShaderDefinesVisitor;
-using detail::TraverseShadowedSceneCallback;
 using detail::FoundLight;
 using detail::FrameContext;
 using detail::LightPass;
@@ -606,6 +596,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     detail::PassServices services;
     services.warnOnce = warner();
     services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
+    services.applicationPrograms = [this]() { return hasApplicationPrograms(); };
     services.warnAlphaTested = [this](bool hybrid, bool lists) {
         if (!_alphaTested.empty()) warnAlphaTested(hybrid, lists);
     };
@@ -677,7 +668,6 @@ detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) cons
     s.tuning = _tuning;
     s.listSlots = listSlots();
     s.recordingStats = _stats.valid();
-    s.applicationPrograms = hasApplicationPrograms();
     s.shadowedScene = _shadowedScene;
     s.silhouetteMapStateSet = _silhouetteMapStateSet.get();
     s.listStateSet = _listStateSet.get();

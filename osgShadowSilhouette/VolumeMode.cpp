@@ -101,7 +101,7 @@ bool cullScreenVisibility(ModeFrame& mf)
     ViewData& vd = mf.vd;
     osgUtil::CullVisitor& cv = mf.cv;
     // The mask and class views draw the technique's own answer, one light at a time.
-    bool use = mf.frame.stencil && !oneLightDebugView(mf.settings) && mf.settings.applicationPrograms;
+    bool use = mf.frame.stencil && !oneLightDebugView(mf.settings) && mf.services.applicationPrograms();
     const osg::Viewport* viewport = cv.getViewport();
     if (use && (!viewport || !cv.getState() || !ScreenVisibility::supported(cv.getState()->getContextID())))
     {
