@@ -1177,40 +1177,10 @@ TEST(ReferenceImages, ImageConversions)
 // ---------------------------------------------------------------------------------------
 // Speed
 
-/** A 224 x 224 cell height field (100352 triangles) of bumps over [-20, 20]^2. */
-osg::ref_ptr<osg::Node> bumpyTerrain()
-{
-    const int n = 224;
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-        {
-            const float x = -20.0f + 40.0f * i / n, y = -20.0f + 40.0f * j / n;
-            v->push_back(osg::Vec3(x, y, 1.5f * std::sin(0.7f * x) * std::cos(0.5f * y)));
-        }
-    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-        {
-            const unsigned a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-            for (unsigned k : {a, b, d, a, d, c}) tris->push_back(k);
-        }
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-    g->setVertexArray(v.get());
-    g->addPrimitiveSet(tris.get());
-    return geode(g.get());
-}
-
 TEST(ReferenceSpeed, HundredThousandTrianglesAt1024x768)
 {
     const osg::ref_ptr<osg::Node> scene = bumpyTerrain();
-    Camera c;
-    c.eye = osg::Vec3d(0, -35, 25);
-    c.center = osg::Vec3d(0, 0, 0);
-    c.up = osg::Vec3d(0, 0, 1);
-    c.fovyDeg = 45;
-    c.width = 1024;
-    c.height = 768;
+    const Camera c = terrainCamera();
     const auto start = std::chrono::steady_clock::now();
     const Mask m = ossref::computeReferenceMask(*scene, c, directional({1, 0.3, 0.4}));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -22,6 +22,7 @@
 #include <osgDB/ReadFile>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -517,6 +518,37 @@ TEST(SoftReferenceImages, EightBitMasksReadAsHardVisibility)
     EXPECT_EQ(read.value, (std::vector<uint16_t>{0, ossref::VIS_BACKGROUND, ossref::VIS_FULL}));
     EXPECT_FALSE(ossref::readVisibility(testing::TempDir() + "no_such_file.png", read));
     EXPECT_EQ(read.width, 3); // untouched
+}
+
+// ---------------------------------------------------------------------------------------
+// Speed
+
+/** Milliseconds of one visibility render of the bumpy terrain (100352 triangles) seen by
+ *  terrainCamera() at width x height, under a directional light toward (1, 0.3, 0.4). */
+double terrainVisibilityMs(int width, int height, double lightSizeDeg, VisibilityMask& mask)
+{
+    const ossref::Tracer tracer(*bumpyTerrain());
+    Camera camera = terrainCamera();
+    camera.width = width;
+    camera.height = height;
+    const auto start = std::chrono::steady_clock::now();
+    mask = tracer.renderVisibility(camera, sizedLight(directional({1, 0.3, 0.4}), lightSizeDeg));
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(SoftReferenceSpeed, HundredThousandTriangles)
+{
+    VisibilityMask soft, hard;
+    const double softMs = terrainVisibilityMs(256, 192, 2.0, soft);
+    const double hardMs = terrainVisibilityMs(1024, 768, 0.0, hard);
+    std::cout << "renderVisibility, 100352 triangles: 256x192 light 2 degrees " << softMs
+              << " ms; 1024x768 size 0 (4 x 4 sub-pixel rays) " << hardMs << " ms" << std::endl;
+    RecordProperty("soft_256x192_ms", std::to_string(softMs));
+    RecordProperty("size0_1024x768_ms", std::to_string(hardMs));
+    const ossref::VisibilityComparison self = ossref::compareVisibility(soft, soft);
+    EXPECT_GT(self.penumbraPixels, 1000);
+    EXPECT_LT(softMs, 120000.0); // seconds on two cores; generous for shared machines
+    EXPECT_LT(hardMs, 120000.0);
 }
 
 } // namespace

@@ -2,7 +2,8 @@
 /* osgShadowSilhouette - exact reference shadow masks.
  *
  * Ray casting with Embree 3 following the conventions of MEASURE.md: one primary ray
- * through each pixel centre, one shadow ray from the visible point toward the light.
+ * through each pixel centre, one shadow ray from the visible point toward the light; for
+ * lights with a size, the visible fraction of the light (visibility masks).
  * Used by the tests, the renderer (--mask) and the benchmark to score every mode.
  */
 #ifndef OSGSHADOWSILHOUETTE_REFERENCE
