@@ -521,7 +521,7 @@ TEST(SoftReferenceImages, EightBitMasksReadAsHardVisibility)
 }
 
 // ---------------------------------------------------------------------------------------
-// Speed
+// Cost: printed and recorded for docs/reference.md; no bound on time, only on what was computed.
 
 /** Milliseconds of one visibility render of the bumpy terrain (100352 triangles) seen by
  *  terrainCamera() at width x height, under a directional light toward (1, 0.3, 0.4). */
@@ -547,8 +547,8 @@ TEST(SoftReferenceSpeed, HundredThousandTriangles)
     RecordProperty("size0_1024x768_ms", std::to_string(hardMs));
     const ossref::VisibilityComparison self = ossref::compareVisibility(soft, soft);
     EXPECT_GT(self.penumbraPixels, 1000);
-    EXPECT_LT(softMs, 120000.0); // seconds on two cores; generous for shared machines
-    EXPECT_LT(hardMs, 120000.0);
+    EXPECT_GT(std::count(hard.value.begin(), hard.value.end(), uint16_t(0)), 10000);
+    EXPECT_GT(std::count(hard.value.begin(), hard.value.end(), ossref::VIS_FULL), 10000);
 }
 
 } // namespace
