@@ -8,6 +8,7 @@
 // 200 x 200 = 40000 pixels; the other 90000 - 40000 = 50000 are background. A point at
 // height z projects 1000 / (1000 - z) times farther from the centre than at z = 0.
 #include "reference/Reference.h"
+#include "test_reference_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -42,22 +43,10 @@ using ossref::Camera;
 using ossref::Comparison;
 using ossref::Light;
 using ossref::Mask;
+using namespace reftest;
 
-const int kSize = 300;
 const long long kGround = 40000;
 const long long kBackground = 50000;
-
-Camera topCamera()
-{
-    Camera c;
-    c.eye = osg::Vec3d(0.0, 0.0, 1000.0);
-    c.center = osg::Vec3d(0.0, 0.0, 0.0);
-    c.up = osg::Vec3d(0.0, 1.0, 0.0);
-    c.fovyDeg = osg::RadiansToDegrees(2.0 * std::atan(0.015));
-    c.width = kSize;
-    c.height = kSize;
-    return c;
-}
 
 /** The pixel column (or row, GL) whose centre sees world coordinate w on the ground. */
 int pixelOf(double w) { return int(std::floor((w + 15.0) / 0.1)); }
@@ -75,71 +64,6 @@ long long centresInside(double lo, double hi)
         n += (c > lo && c < hi) ? 1 : 0;
     }
     return n;
-}
-
-osg::ref_ptr<osg::Geometry> quad(double x0, double x1, double y0, double y1, double z)
-{
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    v->push_back(osg::Vec3(x0, y0, z));
-    v->push_back(osg::Vec3(x1, y0, z));
-    v->push_back(osg::Vec3(x1, y1, z));
-    v->push_back(osg::Vec3(x0, y1, z));
-    g->setVertexArray(v.get());
-    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
-    return g;
-}
-
-osg::ref_ptr<osg::Geode> geode(osg::Drawable* d, unsigned int mask = ~0u)
-{
-    osg::ref_ptr<osg::Geode> g = new osg::Geode;
-    g->addDrawable(d);
-    g->setNodeMask(mask);
-    return g;
-}
-
-enum class Occluder { None, Quad, Box, QuadUnderTransform };
-
-/** Ground [-10, 10]^2 at z = 0 plus an occluder whose top is the square [-1, 1]^2 at z = 4
- *  (Box: the box [-1, 1]^2 x [3, 4]; QuadUnderTransform: the quad at z = 0 moved up by a
- *  MatrixTransform). The occluder's node mask is `occluderMask`. */
-osg::ref_ptr<osg::Group> groundScene(Occluder occluder, unsigned int occluderMask = ~0u)
-{
-    osg::ref_ptr<osg::Group> root = new osg::Group;
-    root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
-    switch (occluder)
-    {
-    case Occluder::None: break;
-    case Occluder::Quad: root->addChild(geode(quad(-1, 1, -1, 1, 4).get(), occluderMask)); break;
-    case Occluder::Box:
-        root->addChild(geode(new osg::ShapeDrawable(new osg::Box(osg::Vec3(0, 0, 3.5f), 2, 2, 1)), occluderMask));
-        break;
-    case Occluder::QuadUnderTransform:
-    {
-        osg::ref_ptr<osg::MatrixTransform> t = new osg::MatrixTransform(osg::Matrixd::translate(0, 0, 4));
-        t->addChild(geode(quad(-1, 1, -1, 1, 0).get()));
-        t->setNodeMask(occluderMask);
-        root->addChild(t.get());
-        break;
-    }
-    }
-    return root;
-}
-
-Light directional(const osg::Vec3d& towardLight)
-{
-    Light l;
-    l.type = Light::DIRECTIONAL;
-    l.vector = towardLight;
-    return l;
-}
-
-Light pointLight(const osg::Vec3d& position)
-{
-    Light l;
-    l.type = Light::POINT;
-    l.vector = position;
-    return l;
 }
 
 long long grazingCount(const Mask& m)
@@ -1251,42 +1175,13 @@ TEST(ReferenceImages, ImageConversions)
 }
 
 // ---------------------------------------------------------------------------------------
-// Speed
-
-/** A 224 x 224 cell height field (100352 triangles) of bumps over [-20, 20]^2. */
-osg::ref_ptr<osg::Node> bumpyTerrain()
-{
-    const int n = 224;
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-        {
-            const float x = -20.0f + 40.0f * i / n, y = -20.0f + 40.0f * j / n;
-            v->push_back(osg::Vec3(x, y, 1.5f * std::sin(0.7f * x) * std::cos(0.5f * y)));
-        }
-    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-        {
-            const unsigned a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-            for (unsigned k : {a, b, d, a, d, c}) tris->push_back(k);
-        }
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-    g->setVertexArray(v.get());
-    g->addPrimitiveSet(tris.get());
-    return geode(g.get());
-}
+// Cost: printed and recorded for docs/reference.md; no bound on time (a machine's load is not
+// the reference's fault), only on what was computed.
 
 TEST(ReferenceSpeed, HundredThousandTrianglesAt1024x768)
 {
     const osg::ref_ptr<osg::Node> scene = bumpyTerrain();
-    Camera c;
-    c.eye = osg::Vec3d(0, -35, 25);
-    c.center = osg::Vec3d(0, 0, 0);
-    c.up = osg::Vec3d(0, 0, 1);
-    c.fovyDeg = 45;
-    c.width = 1024;
-    c.height = 768;
+    const Camera c = terrainCamera();
     const auto start = std::chrono::steady_clock::now();
     const Mask m = ossref::computeReferenceMask(*scene, c, directional({1, 0.3, 0.4}));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -1294,7 +1189,6 @@ TEST(ReferenceSpeed, HundredThousandTrianglesAt1024x768)
     RecordProperty("reference_ms", std::to_string(ms));
     EXPECT_GT(m.count(0), 10000);
     EXPECT_GT(m.count(255), 10000);
-    EXPECT_LT(ms, 20000.0);  // a few hundred ms on two cores; generous for shared machines
 }
 
 } // namespace

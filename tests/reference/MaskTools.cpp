@@ -1,5 +1,6 @@
 // Shadow masks: comparison against the reference (MEASURE.md), distance to the reference
-// shadow boundary, conversion to and from osg::Image, PNG files and diff images.
+// shadow boundary, conversion to and from osg::Image, PNG files and diff images; the
+// images and files of visibility masks.
 #include "reference/Reference.h"
 
 #include <osgDB/ReadFile>
@@ -59,15 +60,28 @@ bool isBoundary(const std::vector<uint8_t>& c, int w, int h, int x, int y)
            (y > 0 && c[size_t(y - 1) * w + x] == other) || (y + 1 < h && c[size_t(y + 1) * w + x] == other);
 }
 
-bool consistent(const Mask& m)
+template <class MaskT>
+bool consistent(const MaskT& m)
 {
     return m.width > 0 && m.height > 0 && m.value.size() == size_t(m.width) * m.height;
 }
 
-/** First channel of pixel x of an image row, as 0..255. */
-uint8_t firstChannel(const unsigned char* row, int x, unsigned pixelBytes, GLenum dataType)
+/** The mask that fromImage() makes of the image file at `path`; false (and `out`
+ *  untouched) if the file is unreadable or the mask empty. */
+template <class MaskT, class FromImage>
+bool readImageAs(const std::string& path, MaskT& out, FromImage fromImage)
 {
-    const unsigned char* p = row + size_t(x) * pixelBytes;
+    osg::ref_ptr<osg::Image> image = osgDB::readRefImageFile(path);
+    if (!image.valid()) return false;
+    MaskT m = fromImage(*image);
+    if (m.empty()) return false;
+    out = std::move(m);
+    return true;
+}
+
+/** First channel of the pixel at p, as 0..255. */
+uint8_t firstChannel(const unsigned char* p, GLenum dataType)
+{
     if (dataType == GL_UNSIGNED_BYTE) return *p;
     float f = 0.0f;
     std::memcpy(&f, p, sizeof(float));
@@ -86,17 +100,38 @@ bool supportedFormat(GLenum format)
     }
 }
 
-} // namespace
-
-Mask Mask::filled(int width, int height, uint8_t fill)
+/** A mask whose value at each pixel is pixel(bytes of the image's pixel), the image's
+ *  rows bottom first; empty for an empty image or a format supportedFormat() refuses. */
+template <class MaskT, class Pixel>
+MaskT maskOfImage(const osg::Image& image, Pixel pixel)
 {
-    Mask m;
-    m.width = std::max(0, width);
-    m.height = std::max(0, height);
-    m.value.assign(size_t(m.width) * m.height, fill);
-    m.grazing.assign(m.value.size(), 0);
+    if (image.s() <= 0 || image.t() <= 0 || !image.data() || !supportedFormat(image.getPixelFormat())) return MaskT();
+    MaskT m = MaskT::filled(image.s(), image.t());
+    const size_t pixelBytes = image.getPixelSizeInBits() / 8;
+    for (int r = 0; r < m.height; ++r)
+    {
+        const unsigned char* row = image.data(0, unsigned(m.height - 1 - r));
+        for (int x = 0; x < m.width; ++x) m.value[size_t(r) * m.width + x] = pixel(row + size_t(x) * pixelBytes);
+    }
     return m;
 }
+
+/** A one-channel image of the mask values (GL_LUMINANCE, `dataType` of the values' size),
+ *  bottom row first, so that osgDB writes the file top row first. Null for an empty mask. */
+template <class MaskT>
+osg::ref_ptr<osg::Image> luminanceImage(const MaskT& mask, GLenum dataType, GLint internalFormat)
+{
+    if (!consistent(mask)) return nullptr;
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(mask.width, mask.height, 1, GL_LUMINANCE, dataType, 1);
+    image->setInternalTextureFormat(internalFormat);
+    const size_t rowBytes = sizeof(mask.value[0]) * size_t(mask.width);
+    for (int r = 0; r < mask.height; ++r)
+        std::memcpy(image->data(0, unsigned(mask.height - 1 - r)), &mask.value[size_t(r) * mask.width], rowBytes);
+    return image;
+}
+
+} // namespace
 
 long long Mask::count(uint8_t v) const { return std::count(value.begin(), value.end(), v); }
 
@@ -179,29 +214,13 @@ Comparison compareMasks(const Mask& test, const Mask& reference)
 Mask maskFromImage(const osg::Image& image)
 {
     const GLenum type = image.getDataType();
-    if (image.s() <= 0 || image.t() <= 0 || !image.data() || !supportedFormat(image.getPixelFormat()) ||
-        (type != GL_UNSIGNED_BYTE && type != GL_FLOAT))
-        return Mask();
-    Mask m = Mask::filled(image.s(), image.t(), MASK_BACKGROUND);
-    const unsigned pixelBytes = image.getPixelSizeInBits() / 8;
-    for (int r = 0; r < m.height; ++r)
-    {
-        const unsigned char* row = image.data(0, unsigned(m.height - 1 - r));
-        for (int x = 0; x < m.width; ++x)
-            m.value[size_t(r) * m.width + x] = classify(firstChannel(row, x, pixelBytes, type));
-    }
-    return m;
+    if (type != GL_UNSIGNED_BYTE && type != GL_FLOAT) return Mask();
+    return maskOfImage<Mask>(image, [type](const unsigned char* p) { return classify(firstChannel(p, type)); });
 }
 
 osg::ref_ptr<osg::Image> imageFromMask(const Mask& mask)
 {
-    if (!consistent(mask)) return nullptr;
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(mask.width, mask.height, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, 1);
-    image->setInternalTextureFormat(GL_LUMINANCE);
-    for (int r = 0; r < mask.height; ++r)
-        std::memcpy(image->data(0, unsigned(mask.height - 1 - r)), &mask.value[size_t(r) * mask.width], mask.width);
-    return image;
+    return luminanceImage(mask, GL_UNSIGNED_BYTE, GL_LUMINANCE);
 }
 
 bool writeMask(const Mask& mask, const std::string& path)
@@ -212,12 +231,33 @@ bool writeMask(const Mask& mask, const std::string& path)
 
 bool readMask(const std::string& path, Mask& mask)
 {
-    osg::ref_ptr<osg::Image> image = osgDB::readRefImageFile(path);
-    if (!image.valid()) return false;
-    Mask m = maskFromImage(*image);
-    if (m.empty()) return false;
-    mask = std::move(m);
-    return true;
+    return readImageAs(path, mask, maskFromImage);
+}
+
+osg::ref_ptr<osg::Image> imageFromVisibility(const VisibilityMask& mask)
+{
+    return luminanceImage(mask, GL_UNSIGNED_SHORT, GL_LUMINANCE16);
+}
+
+VisibilityMask visibilityFromImage(const osg::Image& image)
+{
+    if (image.getDataType() != GL_UNSIGNED_SHORT) return visibilityFromMask(maskFromImage(image));
+    return maskOfImage<VisibilityMask>(image, [](const unsigned char* p) {
+        uint16_t v = 0;
+        std::memcpy(&v, p, sizeof(v));
+        return v;
+    });
+}
+
+bool writeVisibility(const VisibilityMask& mask, const std::string& path)
+{
+    osg::ref_ptr<osg::Image> image = imageFromVisibility(mask);
+    return image.valid() && osgDB::writeImageFile(*image, path);
+}
+
+bool readVisibility(const std::string& path, VisibilityMask& mask)
+{
+    return readImageAs(path, mask, visibilityFromImage);
 }
 
 osg::ref_ptr<osg::Image> diffImage(const Mask& test, const Mask& reference)

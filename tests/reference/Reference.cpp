@@ -419,6 +419,9 @@ struct LightFrame
         spot = light.type == Light::SPOT && light.spotCutoffDeg < 180.0 && spotAxis.normalize() > 0.0;
         cosCutoff = std::cos(osg::DegreesToRadians(std::max(0.0, light.spotCutoffDeg)));
         if (!directional) valid = isFinite(position);
+        sized = light.size > 0.0 && std::isfinite(light.size);
+        if (sized && directional) cosAngle = std::cos(osg::DegreesToRadians(std::min(180.0, light.size)));
+        if (sized && !directional) radius = light.size;
     }
 
     /** Normalised direction from p toward the light and the distance to it. */
@@ -445,7 +448,10 @@ struct LightFrame
     bool directional;
     bool valid = true;
     bool spot = false;
+    bool sized = false; // a sphere or a cone, not a point or a single direction
     double cosCutoff = -1.0;
+    double radius = 0.0;   // POINT, SPOT: the sphere's
+    double cosAngle = 1.0; // DIRECTIONAL: cosine of the cone's angular radius
     osg::Vec3d direction;
     osg::Vec3d position;
     osg::Vec3d spotAxis;
@@ -456,6 +462,123 @@ struct PixelResult
     uint8_t value = MASK_BACKGROUND;
     uint8_t grazing = 0;
 };
+
+struct PixelVisibility
+{
+    uint16_t value = VIS_BACKGROUND;
+    uint8_t grazing = 0;
+};
+
+/** The point a primary ray sees: p on its triangle's plane, n the unit geometric normal
+ *  turned toward the camera. Both in the tracer's recentred frame. */
+struct SurfacePoint
+{
+    osg::Vec3d p;
+    osg::Vec3d n;
+};
+
+/** A unit basis (b1, b2) of the plane perpendicular to the unit vector n (Duff et al.,
+ *  "Building an Orthonormal Basis, Revisited", JCGT 2017). */
+void basisAround(const osg::Vec3d& n, osg::Vec3d& b1, osg::Vec3d& b2)
+{
+    const double sign = std::copysign(1.0, n.z());
+    const double a = -1.0 / (sign + n.z());
+    const double b = n.x() * n.y() * a;
+    b1 = osg::Vec3d(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
+    b2 = osg::Vec3d(b, sign + n.y() * n.y() * a, -n.y());
+}
+
+/** A light with a size as one visible point p sees it (computeReferenceVisibility): a
+ *  disk around the light's position perpendicular to the direction from p, or the cone
+ *  of directions around the light's direction. Maps a point of the unit square to a
+ *  shadow ray, keeping areas. */
+struct LightSampler
+{
+    LightSampler(const LightFrame& light, const osg::Vec3d& p) : light(light)
+    {
+        axis = light.directional ? light.direction : light.position - p;
+        axis.normalize();
+        basisAround(axis, b1, b2);
+    }
+
+    /** The unit direction from `start` toward sample s of the light, and the distance to
+     *  that point of the light (infinite for a directional light). */
+    osg::Vec3d toward(const osg::Vec3d& start, const osg::Vec2d& s, double& distance) const
+    {
+        const double azimuth = 2.0 * osg::PI * s.y();
+        const osg::Vec3d across = b1 * std::cos(azimuth) + b2 * std::sin(azimuth);
+        if (light.directional)
+        {
+            const double cosA = 1.0 - s.x() * (1.0 - light.cosAngle);
+            distance = kInf;
+            return axis * cosA + across * std::sqrt(std::max(0.0, 1.0 - cosA * cosA));
+        }
+        osg::Vec3d d = light.position + across * (light.radius * std::sqrt(s.x())) - start;
+        distance = d.normalize();
+        return d;
+    }
+
+    const LightFrame& light;
+    osg::Vec3d axis, b1, b2;
+};
+
+/** SplitMix64 (Steele, Lea and Flood, 2014): a stream of 64-bit numbers from a seed. */
+struct SplitMix64
+{
+    uint64_t state;
+
+    uint64_t next()
+    {
+        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    /** Uniform in [0, 1): the top 53 bits. */
+    double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+};
+
+/** The fixed seed of every sample pattern of the reference. */
+const uint64_t kSampleSeed = 0x05F7AD0E5EEDull;
+
+/** The key of a pixel's sample pattern; `stream` tells the light's samples from the
+ *  pixel's. */
+uint64_t pixelKey(int x, int y, unsigned stream)
+{
+    return (uint64_t(stream) << 62) ^ (uint64_t(uint32_t(y)) << 31) ^ uint64_t(uint32_t(x));
+}
+
+/** An Embree ray from origin along direction, tnear 0. */
+RTCRay makeRay(const osg::Vec3d& origin, const osg::Vec3d& direction, double tfar)
+{
+    RTCRay ray;
+    ray.org_x = float(origin.x());
+    ray.org_y = float(origin.y());
+    ray.org_z = float(origin.z());
+    ray.dir_x = float(direction.x());
+    ray.dir_y = float(direction.y());
+    ray.dir_z = float(direction.z());
+    ray.tnear = 0.0f;
+    ray.tfar = float(tfar);
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    return ray;
+}
+
+/** Calls rows(first, step) for first = 0 .. n - 1 on n threads (`threads`, 0 = all cores,
+ *  at most `height`): each call renders the rows first, first + step, ... */
+template <class Rows>
+void splitRows(int height, unsigned threads, Rows&& rows)
+{
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, unsigned(height));
+    std::vector<std::thread> workers;
+    for (unsigned t = 1; t < threads; ++t) workers.emplace_back([&, t] { rows(t, threads); });
+    rows(0, threads);
+    for (std::thread& w : workers) w.join();
+}
 
 /** GL's wrap of an integer texel coordinate (OpenGL 4.6, 8.14.2): REPEAT, MIRRORED_REPEAT,
  *  anything else clamps to the edge. */
@@ -626,9 +749,26 @@ struct Tracer::Impl
     double offsetScale = DEFAULT_OFFSET_SCALE;
 
     double epsilon(const osg::Vec3d& local) const { return offsetScale * radius + 1e-6 * local.length(); }
-    PixelResult shade(const RayFrame& rays, const LightFrame& light, int x, int y) const;
+    bool visiblePoint(const RayFrame& rays, double winX, double winY, SurfacePoint& surface) const;
+    bool facesLight(const LightFrame& light, const SurfacePoint& surface, uint8_t& grazing) const;
+    PixelResult shade(const RayFrame& rays, const LightFrame& light, double winX, double winY) const;
     bool occluded(const osg::Vec3d& origin, const osg::Vec3d& direction, double tfar) const;
     void renderRows(const RayFrame& rays, const LightFrame& light, Mask& mask, unsigned first, unsigned step) const;
+
+    /** Scratch space of one thread's visibility rows. */
+    struct ShadowBatch
+    {
+        std::vector<osg::Vec2d> samples;
+        std::vector<RTCRay> rays;
+    };
+    double lightVisibility(const LightFrame& light, const SurfacePoint& surface, uint64_t key,
+                           ShadowBatch& batch) const;
+    PixelVisibility softShade(const RayFrame& rays, const LightFrame& light, int x, int y, ShadowBatch& batch) const;
+    PixelVisibility coverage(const RayFrame& rays, const LightFrame& light, int x, int y, ShadowBatch& batch) const;
+    void renderRows(const RayFrame& rays, const LightFrame& light, VisibilityMask& mask, unsigned first,
+                    unsigned step) const;
+    template <class MaskT>
+    MaskT renderMask(const Camera& camera, const Light& light, unsigned threads) const;
 };
 
 void Tracer::Impl::build(const TriangleSoup& soup)
@@ -759,51 +899,27 @@ bool Tracer::Impl::occluded(const osg::Vec3d& origin, const osg::Vec3d& directio
 {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray;
-    ray.org_x = float(origin.x());
-    ray.org_y = float(origin.y());
-    ray.org_z = float(origin.z());
-    ray.dir_x = float(direction.x());
-    ray.dir_y = float(direction.y());
-    ray.dir_z = float(direction.z());
-    ray.tnear = 0.0f;
-    ray.tfar = float(tfar);
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = makeRay(origin, direction, tfar);
     rtcOccluded1(shadow, &context, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
 
-PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, int x, int y) const
+bool Tracer::Impl::visiblePoint(const RayFrame& rays, double winX, double winY, SurfacePoint& surface) const
 {
-    PixelResult result;
-    const osg::Vec3d dir = rays.direction(x + 0.5, y + 0.5);
+    const osg::Vec3d dir = rays.direction(winX, winY);
     const osg::Vec3d org = rays.origin - centre;
-    if (!isFinite(dir) || !isFinite(org)) return result;
+    if (!isFinite(dir) || !isFinite(org)) return false;
 
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
-    rh.ray.org_x = float(org.x());
-    rh.ray.org_y = float(org.y());
-    rh.ray.org_z = float(org.z());
-    rh.ray.dir_x = float(dir.x());
-    rh.ray.dir_y = float(dir.y());
-    rh.ray.dir_z = float(dir.z());
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = std::numeric_limits<float>::infinity();
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    rh.ray = makeRay(org, dir, kInf);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(primary, &context, &rh);
-    if (rh.hit.geomID != OPAQUE_GEOMETRY && rh.hit.geomID != CUTOUT_GEOMETRY) return result;
+    if (rh.hit.geomID != OPAQUE_GEOMETRY && rh.hit.geomID != CUTOUT_GEOMETRY) return false;
     const size_t triangle = size_t(rh.hit.primID) + firstPrim[rh.hit.geomID];
-    if (triangle >= normals.size()) return result;
+    if (triangle >= normals.size()) return false;
 
     // Embree's hit distance is a float, good to a few units in the last place of the
     // distance from the camera: the hit is moved onto the plane of its triangle in double
@@ -816,24 +932,120 @@ PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, i
         const double exact = ((origins[triangle] - org) * n) / nd;
         if (std::isfinite(exact) && exact > 0.0) t = exact;
     }
-    const osg::Vec3d p = org + dir * t;
-    if (n * dir > 0.0) n = -n;
-    result.value = MASK_NO_LIGHT;
-    if (!light.valid) return result;
+    surface.p = org + dir * t;
+    surface.n = n * dir > 0.0 ? -n : n;
+    return true;
+}
 
+/** Whether the seen side of the surface faces the light's centre (N.L > 0) and, for a
+ *  spot, the point lies in its cone; `grazing` is set for the band 0 < N.L < 0.05. */
+bool Tracer::Impl::facesLight(const LightFrame& light, const SurfacePoint& surface, uint8_t& grazing) const
+{
+    if (!light.valid) return false;
     double distance = 0.0;
-    const osg::Vec3d l = light.toLight(p, distance);
-    const double ndotl = n * l;
-    result.grazing = (ndotl > 0.0 && ndotl < GRAZING_NDOTL) ? 1 : 0;
-    if (!(ndotl > 0.0) || !light.inCone(p)) return result;
+    const double ndotl = surface.n * light.toLight(surface.p, distance);
+    grazing = (ndotl > 0.0 && ndotl < GRAZING_NDOTL) ? 1 : 0;
+    return ndotl > 0.0 && light.inCone(surface.p);
+}
 
-    const double eps = epsilon(p);
-    const osg::Vec3d start = p + n * eps;
+PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, double winX, double winY) const
+{
+    PixelResult result;
+    SurfacePoint surface;
+    if (!visiblePoint(rays, winX, winY, surface)) return result;
+    result.value = MASK_NO_LIGHT;
+    if (!facesLight(light, surface, result.grazing)) return result;
+
+    const double eps = epsilon(surface.p);
+    const osg::Vec3d start = surface.p + surface.n * eps;
     double tfar = kInf;
-    const osg::Vec3d toward = light.directional ? l : light.toLight(start, tfar);
+    const osg::Vec3d toward = light.toLight(start, tfar);
     tfar -= eps;
     if (tfar <= 0.0 || !occluded(start, toward, tfar)) result.value = MASK_LIT;
     return result;
+}
+
+/** The fraction of the light's LIGHT_STRATA^2 shadow rays from `surface` that reach it. */
+double Tracer::Impl::lightVisibility(const LightFrame& light, const SurfacePoint& surface, uint64_t key,
+                                     ShadowBatch& batch) const
+{
+    stratifiedSamples(LIGHT_STRATA, key, batch.samples);
+    const LightSampler sampler(light, surface.p);
+    const double eps = epsilon(surface.p);
+    const osg::Vec3d start = surface.p + surface.n * eps;
+    size_t reached = 0;
+    batch.rays.clear();
+    for (const osg::Vec2d& s : batch.samples)
+    {
+        double distance = kInf;
+        const osg::Vec3d toward = sampler.toward(start, s, distance);
+        if (!(toward * surface.n > 0.0)) continue; // below the seen side's horizon
+        if (distance - eps <= 0.0)
+            ++reached;
+        else
+            batch.rays.push_back(makeRay(start, toward, distance - eps));
+    }
+    if (!batch.rays.empty())
+    {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        rtcOccluded1M(shadow, &context, batch.rays.data(), unsigned(batch.rays.size()), sizeof(RTCRay));
+        for (const RTCRay& ray : batch.rays) reached += ray.tfar == -std::numeric_limits<float>::infinity() ? 0 : 1;
+    }
+    return double(reached) / double(batch.samples.size());
+}
+
+PixelVisibility Tracer::Impl::softShade(const RayFrame& rays, const LightFrame& light, int x, int y,
+                                        ShadowBatch& batch) const
+{
+    PixelVisibility result;
+    SurfacePoint surface;
+    if (!visiblePoint(rays, x + 0.5, y + 0.5, surface)) return result;
+    result.value = VIS_NONE;
+    if (!facesLight(light, surface, result.grazing)) return result;
+    result.value = encodeVisibility(lightVisibility(light, surface, pixelKey(x, y, 0), batch));
+    return result;
+}
+
+/** A light of size 0: the lit fraction of the pixel's sub-pixel rays that hit geometry. */
+PixelVisibility Tracer::Impl::coverage(const RayFrame& rays, const LightFrame& light, int x, int y,
+                                       ShadowBatch& batch) const
+{
+    PixelVisibility result;
+    const PixelResult centre = shade(rays, light, x + 0.5, y + 0.5);
+    if (centre.value == MASK_BACKGROUND) return result;
+    result.grazing = centre.grazing;
+    stratifiedSamples(PIXEL_STRATA, pixelKey(x, y, 1), batch.samples);
+    int hits = 0;
+    int lit = 0;
+    for (const osg::Vec2d& s : batch.samples)
+    {
+        const PixelResult r = shade(rays, light, x + s.x(), y + s.y());
+        hits += r.value != MASK_BACKGROUND ? 1 : 0;
+        lit += r.value == MASK_LIT ? 1 : 0;
+    }
+    const double v = hits > 0 ? double(lit) / hits : (centre.value == MASK_LIT ? 1.0 : 0.0);
+    result.value = encodeVisibility(v);
+    return result;
+}
+
+void Tracer::Impl::renderRows(const RayFrame& rays, const LightFrame& light, VisibilityMask& mask, unsigned first,
+                              unsigned step) const
+{
+    ShadowBatch batch;
+    batch.rays.reserve(size_t(LIGHT_STRATA) * LIGHT_STRATA);
+    for (int y = int(first); y < mask.height; y += int(step))
+    {
+        const size_t row = size_t(mask.height - 1 - y) * mask.width;
+        for (int x = 0; x < mask.width; ++x)
+        {
+            const PixelVisibility r =
+                light.sized ? softShade(rays, light, x, y, batch) : coverage(rays, light, x, y, batch);
+            mask.value[row + x] = r.value;
+            mask.grazing[row + x] = r.grazing;
+        }
+    }
 }
 
 void Tracer::Impl::renderRows(const RayFrame& rays, const LightFrame& light, Mask& mask, unsigned first,
@@ -844,7 +1056,7 @@ void Tracer::Impl::renderRows(const RayFrame& rays, const LightFrame& light, Mas
         const size_t row = size_t(mask.height - 1 - y) * mask.width;
         for (int x = 0; x < mask.width; ++x)
         {
-            const PixelResult r = shade(rays, light, x, y);
+            const PixelResult r = shade(rays, light, x + 0.5, y + 0.5);
             mask.value[row + x] = r.value;
             mask.grazing[row + x] = r.grazing;
         }
@@ -871,21 +1083,28 @@ void Tracer::setOffsetScale(double scale) { _impl->offsetScale = scale; }
 
 double Tracer::getOffsetScale() const { return _impl->offsetScale; }
 
+/** A mask of the camera's size, background where renderRows() leaves it, its rows split
+ *  over `threads` threads (0 = all cores). */
+template <class MaskT>
+MaskT Tracer::Impl::renderMask(const Camera& camera, const Light& light, unsigned threads) const
+{
+    if (camera.width <= 0 || camera.height <= 0) return MaskT();
+    MaskT mask = MaskT::filled(camera.width, camera.height);
+    const RayFrame rays(camera);
+    const LightFrame lightFrame(light, centre);
+    splitRows(camera.height, threads,
+              [&](unsigned first, unsigned step) { renderRows(rays, lightFrame, mask, first, step); });
+    return mask;
+}
+
 Mask Tracer::render(const Camera& camera, const Light& light, unsigned int threads) const
 {
-    if (camera.width <= 0 || camera.height <= 0) return Mask();
-    Mask mask = Mask::filled(camera.width, camera.height, MASK_BACKGROUND);
-    const RayFrame rays(camera);
-    const LightFrame lightFrame(light, _impl->centre);
+    return _impl->renderMask<Mask>(camera, light, threads);
+}
 
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min<unsigned>(threads, unsigned(camera.height));
-    std::vector<std::thread> workers;
-    for (unsigned t = 1; t < threads; ++t)
-        workers.emplace_back([&, t] { _impl->renderRows(rays, lightFrame, mask, t, threads); });
-    _impl->renderRows(rays, lightFrame, mask, 0, threads);
-    for (std::thread& w : workers) w.join();
-    return mask;
+VisibilityMask Tracer::renderVisibility(const Camera& camera, const Light& light, unsigned int threads) const
+{
+    return _impl->renderMask<VisibilityMask>(camera, light, threads);
 }
 
 Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light, unsigned int castsMask,
@@ -894,6 +1113,26 @@ Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Li
     Tracer tracer(collectTriangles(scene, &camera, castsMask, traversalMask));
     tracer.setOffsetScale(offsetScale);
     return tracer.render(camera, light);
+}
+
+VisibilityMask computeReferenceVisibility(const osg::Node& scene, const Camera& camera, const Light& light,
+                                          unsigned int castsMask, unsigned int traversalMask)
+{
+    const Tracer tracer(collectTriangles(scene, &camera, castsMask, traversalMask));
+    return tracer.renderVisibility(camera, light);
+}
+
+void stratifiedSamples(int n, uint64_t key, std::vector<osg::Vec2d>& out)
+{
+    n = std::max(0, n);
+    SplitMix64 random{kSampleSeed ^ (key * 0xD1B54A32D192ED03ull)};
+    out.resize(size_t(n) * size_t(n));
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+        {
+            const double u = (i + random.uniform()) / n;
+            out[size_t(i) * n + j] = osg::Vec2d(u, (j + random.uniform()) / n);
+        }
 }
 
 bool cameraFromOsg(const osg::Camera& camera, Camera& out)

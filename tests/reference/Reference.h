@@ -2,7 +2,8 @@
 /* osgShadowSilhouette - exact reference shadow masks.
  *
  * Ray casting with Embree 3 following the conventions of MEASURE.md: one primary ray
- * through each pixel centre, one shadow ray from the visible point toward the light.
+ * through each pixel centre, one shadow ray from the visible point toward the light; for
+ * lights with a size, the visible fraction of the light (visibility masks).
  * Used by the tests, the renderer (--mask) and the benchmark to score every mode.
  */
 #ifndef OSGSHADOWSILHOUETTE_REFERENCE
@@ -26,6 +27,18 @@
 #include <vector>
 
 namespace ossref {
+
+/** A width x height mask (Mask, VisibilityMask) of `fill` values, grazing all 0. */
+template <class MaskT, class Value>
+MaskT filledMask(int width, int height, Value fill)
+{
+    MaskT m;
+    m.width = width > 0 ? width : 0;
+    m.height = height > 0 ? height : 0;
+    m.value.assign(size_t(m.width) * size_t(m.height), fill);
+    m.grazing.assign(m.value.size(), 0);
+    return m;
+}
 
 /** Mask values (MEASURE.md). */
 enum MaskValue : uint8_t { MASK_NO_LIGHT = 0, MASK_BACKGROUND = 128, MASK_LIT = 255 };
@@ -61,7 +74,11 @@ void primaryRay(const Camera& camera, double winX, double winY,
 /** One light. DIRECTIONAL: `vector` is the direction TOWARD the light (need not be
  *  normalised). POINT and SPOT: `vector` is the world position. SPOT: points whose
  *  direction from the light makes an angle larger than spotCutoffDeg with spotDirection
- *  receive no light. */
+ *  receive no light. `size` (MEASURE.md, "Soft shadows"): for POINT and SPOT the radius
+ *  of the sphere around `vector` that emits, in scene units; for DIRECTIONAL the angular
+ *  radius in degrees of the cone of directions around `vector` (as the renderer's
+ *  --light-size). 0 (or anything not above 0) is a point or a single direction; a spot's
+ *  cone still cuts by the direction from the light's centre. */
 struct Light
 {
     enum Type { DIRECTIONAL, POINT, SPOT };
@@ -69,6 +86,7 @@ struct Light
     osg::Vec3d vector{0.0, 0.0, 1.0};
     osg::Vec3d spotDirection{0.0, 0.0, -1.0};
     double spotCutoffDeg = 180.0;
+    double size = 0.0;
 };
 
 /** The Light equivalent of an osg::Light placed by the local-to-world matrix `world`
@@ -94,7 +112,10 @@ struct Mask
     std::vector<uint8_t> grazing;
 
     /** A width x height mask filled with `fill`, grazing all 0. */
-    static Mask filled(int width, int height, uint8_t fill = MASK_BACKGROUND);
+    static Mask filled(int width, int height, uint8_t fill = MASK_BACKGROUND)
+    {
+        return filledMask<Mask>(width, height, fill);
+    }
 
     bool empty() const { return width <= 0 || height <= 0; }
     /** Value at (column x, row from the top). */
@@ -104,6 +125,50 @@ struct Mask
     bool isGrazing(size_t i) const { return i < grazing.size() && grazing[i] != 0; }
     /** Number of pixels equal to v. */
     long long count(uint8_t v) const;
+};
+
+/** Visibility mask values (MEASURE.md, "Soft shadows"): round(v * VIS_FULL) for a
+ *  visibility v in [0, 1], VIS_BACKGROUND where no geometry is seen. */
+enum VisibilityValue : uint16_t
+{
+    VIS_NONE = 0,
+    VIS_FULL = 65534,
+    VIS_BACKGROUND = 65535
+};
+
+/** round(v * VIS_FULL), v clamped to [0, 1] (NaN gives 0). */
+uint16_t encodeVisibility(double v);
+
+/** The visibility of a mask value that is not VIS_BACKGROUND: value / VIS_FULL. */
+inline double decodeVisibility(uint16_t value)
+{
+    return value / double(VIS_FULL);
+}
+
+/** A visibility mask: per pixel the fraction of the light a visible point sees, row 0 =
+ *  TOP row (as in the PNG). grazing: 1 where the point lies in the band 0 < N.L < 0.05 of
+ *  the light's centre (empty or all 0 for masks that come from images). */
+struct VisibilityMask
+{
+    int width = 0;
+    int height = 0;
+    std::vector<uint16_t> value;
+    std::vector<uint8_t> grazing;
+
+    /** A width x height mask filled with `fill`, grazing all 0. */
+    static VisibilityMask filled(int width, int height, uint16_t fill = VIS_BACKGROUND)
+    {
+        return filledMask<VisibilityMask>(width, height, fill);
+    }
+
+    bool empty() const { return width <= 0 || height <= 0; }
+    /** Value at (column x, row from the top). */
+    uint16_t at(int x, int rowFromTop) const { return value[size_t(rowFromTop) * width + x]; }
+    /** Value at GL window pixel (x, y), origin bottom-left. */
+    uint16_t atGL(int x, int y) const { return at(x, height - 1 - y); }
+    /** Visibility at GL window pixel (x, y); not meaningful on background. */
+    double visibilityGL(int x, int y) const { return decodeVisibility(atGL(x, y)); }
+    bool isGrazing(size_t i) const { return i < grazing.size() && grazing[i] != 0; }
 };
 
 /** The alpha test that decides which fragments of a cut-out ("alpha-tested") triangle the
@@ -199,6 +264,10 @@ public:
     /** The reference mask (see computeReferenceMask). `threads` 0 = all cores. */
     Mask render(const Camera& camera, const Light& light, unsigned int threads = 0) const;
 
+    /** The reference visibility mask (see computeReferenceVisibility). `threads` 0 = all
+     *  cores; the result does not depend on it. */
+    VisibilityMask renderVisibility(const Camera& camera, const Light& light, unsigned int threads = 0) const;
+
     /** Shadow-ray offset used at world point p (see computeReferenceMask). */
     double epsilonAt(const osg::Vec3d& p) const;
 
@@ -235,6 +304,40 @@ constexpr double DEFAULT_OFFSET_SCALE = 1e-6;
 Mask computeReferenceMask(const osg::Node& scene, const Camera& camera, const Light& light,
                           unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u,
                           double offsetScale = DEFAULT_OFFSET_SCALE);
+
+/** Strata per side of a light's shadow rays (MEASURE.md: 32 x 32 = 1024 rays). */
+constexpr int LIGHT_STRATA = 32;
+
+/** Strata per side of a pixel's primary rays for a light of size 0 (4 x 4). */
+constexpr int PIXEL_STRATA = 4;
+
+/** n x n jittered points of the unit square: out[i * n + j] lies uniformly at random in
+ *  the stratum [i / n, (i + 1) / n] x [j / n, (j + 1) / n]. The random numbers come from a
+ *  fixed-seed generator keyed by `key` alone: the same key gives the same points, on any
+ *  thread. */
+void stratifiedSamples(int n, uint64_t key, std::vector<osg::Vec2d>& out);
+
+/** The exact reference visibility mask (MEASURE.md, "Soft shadows") of the triangles that
+ *  a view through `camera` draws. The pixel centre's primary ray decides background
+ *  (VIS_BACKGROUND), the visible point and its grazing band as computeReferenceMask does,
+ *  with L the direction to the light's centre; N.L <= 0 or a point outside a spot's cone
+ *  has v = 0.
+ *
+ *  Light with a size: v is the fraction of LIGHT_STRATA^2 shadow rays, one per stratum of
+ *  stratifiedSamples() keyed by the pixel, that reach the light. A POINT or SPOT light of
+ *  radius r is sampled uniformly by area on the disk of radius r around its position,
+ *  perpendicular to the direction from the point (u, v) -> radius r sqrt(u), angle 2 pi v;
+ *  a DIRECTIONAL light of angular radius theta uniformly by solid angle over the cone of
+ *  directions within theta of its direction (u, v) -> 1 - cos(angle) = u (1 - cos theta),
+ *  azimuth 2 pi v. Both maps keep areas, so each stratum holds 1/1024 of the light. A ray
+ *  starts and stops as computeReferenceMask's; one toward a part of the light below the
+ *  seen side's horizon (N.dir <= 0) does not reach it (the surface hides it).
+ *
+ *  Light of size 0: PIXEL_STRATA^2 primary rays through jittered points of the pixel's
+ *  strata, each answered as computeReferenceMask answers a pixel centre; v is the lit
+ *  fraction of those that hit geometry (the centre's answer when none do). */
+VisibilityMask computeReferenceVisibility(const osg::Node& scene, const Camera& camera, const Light& light,
+                                          unsigned int castsMask = ~0u, unsigned int traversalMask = ~0u);
 
 /** Error of a mask against the reference (MEASURE.md). */
 struct Comparison
@@ -279,6 +382,57 @@ bool writeMask(const Mask& mask, const std::string& path);
 
 /** Read a mask through osgDB; false (and `mask` untouched) if unreadable. */
 bool readMask(const std::string& path, Mask& mask);
+
+/** Scores of a visibility mask against the reference (MEASURE.md, "Soft shadows"), over
+ *  the geometry pixels: both masks have geometry and the reference is outside the grazing
+ *  band of the light's centre. */
+struct VisibilityComparison
+{
+    bool valid = false;             ///< false when the sizes differ or a mask is empty
+    std::string error;              ///< why not valid
+    long long geometryPixels = 0;   ///< as Comparison::geometryPixels
+    long long coverageMismatch = 0; ///< background in one mask and not in the other
+    long long grazingExcluded = 0;  ///< both have geometry, reference in the grazing band
+    long long penumbraPixels = 0;   ///< geometry pixels with 0.02 < v_ref < 0.98
+    double visMae = 0.0;            ///< mean |v - v_ref| over geometry pixels (0 if none)
+    double visMaePenumbra = 0.0;    ///< the same over penumbra pixels (0 if none)
+    /** 99th percentile of |v - v_ref| over penumbra pixels, by nearest rank: the k-th
+     *  smallest with k = ceil(0.99 n) (0 if none). */
+    double visP99Penumbra = 0.0;
+    long long hardWrongPixels = 0; ///< Comparison::wrongPixels of both masks thresholded
+    double hardWrongPct = 0.0;     ///< Comparison::wrongPct of both masks thresholded
+};
+
+/** Penumbra: 0.02 < v_ref < 0.98 (MEASURE.md). */
+constexpr double PENUMBRA_LOW = 0.02;
+constexpr double PENUMBRA_HIGH = 0.98;
+
+/** Score `candidate` against `reference` (note the order: reference first). */
+VisibilityComparison compareVisibility(const VisibilityMask& reference, const VisibilityMask& candidate);
+
+/** The hard mask of a visibility mask: v > 0.5 -> 255, else 0; background -> 128; the
+ *  grazing band kept. Empty for an empty mask or one whose values do not fill it. */
+Mask thresholdVisibility(const VisibilityMask& mask);
+
+/** The visibility mask of a hard mask: 255 -> 1, 0 -> 0, background -> VIS_BACKGROUND
+ *  (values classified by classify()); the grazing band kept. */
+VisibilityMask visibilityFromMask(const Mask& mask);
+
+/** A GL_LUMINANCE/GL_UNSIGNED_SHORT image of the mask values, bottom row first, so that
+ *  osgDB writes a 16-bit grey PNG top row first. Null for an empty mask. */
+osg::ref_ptr<osg::Image> imageFromVisibility(const VisibilityMask& mask);
+
+/** A visibility mask from an image whose data is bottom row first: the first channel of
+ *  the formats maskFromImage() reads, GL_UNSIGNED_SHORT data as mask values;
+ *  GL_UNSIGNED_BYTE and GL_FLOAT data through maskFromImage() and visibilityFromMask().
+ *  Any other image gives an empty mask. */
+VisibilityMask visibilityFromImage(const osg::Image& image);
+
+/** Write the mask as a 16-bit grey image through osgDB (PNG for a .png path). */
+bool writeVisibility(const VisibilityMask& mask, const std::string& path);
+
+/** Read a visibility mask through osgDB; false (and `mask` untouched) if unreadable. */
+bool readVisibility(const std::string& path, VisibilityMask& mask);
 
 /** An RGB image (bottom row first) showing the error of `test`: red where test says
  *  shadow and the reference lit, green the reverse, blue where coverage differs, the
