@@ -4,6 +4,7 @@
 // body of a SilhouetteShadowTechnique block inside a ShadowedScene, so that most mutations
 // reach the technique's wrapper (plugins/serializers). Whatever is read is written back as
 // .osgt and read again, and the technique's getters must hold values its setters allow.
+#include <osgShadowSilhouette/Properties>
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 
 #include <osg/Notify>
@@ -36,14 +37,9 @@ void check(const osg::Node* node)
     if (!scene) return;
     const auto* t = dynamic_cast<const osgShadowSilhouette::SilhouetteShadowTechnique*>(scene->getShadowTechnique());
     if (!t) return;
-    // The setters' guarantees (README, Properties).
-    if (t->getShadowMapSize() < 1 || t->getShadowMapSize() > 16384) std::abort();
-    if (!std::isfinite(t->getPolygonOffsetFactor()) || !std::isfinite(t->getPolygonOffsetUnits())) std::abort();
-    if (!std::isfinite(t->getShadowRayOffset()) || t->getShadowRayOffset() < 0.0f) std::abort();
-    if (t->getMaxShadowLights() < 1 || t->getMaxShadowLights() > 8) std::abort();
-    if (t->getMode() < osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_MAP ||
-        t->getMode() > osgShadowSilhouette::SilhouetteShadowTechnique::SHADOW_VOLUME)
-        std::abort();
+    // The setters' guarantees: every property holds one of its row's values (Properties).
+    for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties())
+        if (!osgShadowSilhouette::isPropertyValue(p, p.get(*t))) std::abort();
 }
 
 /** Whether the text gives a group more children than it could hold ("Children N" with N

@@ -1,6 +1,6 @@
 #include "RenderOptions.h"
 
-#include <osgShadowSilhouette/PropertyRanges>
+#include <osgShadowSilhouette/Properties>
 
 #include <algorithm>
 #include <cmath>
@@ -121,33 +121,88 @@ bool reportErrors(osg::ArgumentParser& a, std::string& error)
     return false;
 }
 
-/** The value of an option that sets a technique property, checked against the property's
- *  range (PropertyRanges): "--map-size 4294967297" is refused, not wrapped. */
-bool readProperty(const char* option, const char* property, const std::string& text, unsigned int& value,
-                  std::string& error)
+/** The value of an option that sets a technique property, read by the table of properties
+ *  (osgShadowSilhouette/Properties): "--map-size 4294967297" is refused, not wrapped. */
+bool readPropertyValue(const std::string& option, const std::string& property, const std::string& text, double& value,
+                       std::string& error)
 {
-    const osgShadowSilhouette::NumericPropertyRange& range = *osgShadowSilhouette::numericPropertyRange(property);
-    double number = 0.0;
-    const bool isNumber = osgShadowSilhouette::parseNumber(text, number);
-    if (isNumber && osgShadowSilhouette::inRange(range, number))
+    const osgShadowSilhouette::PropertyInfo* info = osgShadowSilhouette::findProperty(property);
+    if (!info)
     {
-        value = static_cast<unsigned int>(number);
-        return true;
+        error = option + ": no property is named " + property;
+        return false;
     }
-    error = std::string(option) + " " + text + (isNumber ? " is out of range (" : " is not a number (") +
-            osgShadowSilhouette::describeRange(range) + ")";
+    std::string why;
+    if (osgShadowSilhouette::parsePropertyValue(*info, text, value, why)) return true;
+    error = option + " " + text + " " + why;
     return false;
 }
 
+/** --property NAME=VALUE (repeatable) and the shorthands of propertyOptions(), in order. */
+bool readProperties(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
+{
+    for (int i = 1; i < a.argc();)
+    {
+        const std::string arg = a[i];
+        const auto shorthand = std::find_if(propertyOptions().begin(), propertyOptions().end(),
+                                            [&](const auto& option) { return option.first == arg; });
+        std::string text, name;
+        if (arg == "--property" || shorthand != propertyOptions().end())
+        {
+            if (!a.read(i, arg, text))
+            {
+                error = arg + " needs a value";
+                return false;
+            }
+            name = shorthand != propertyOptions().end() ? shorthand->second : text.substr(0, text.find('='));
+            if (arg == "--property") text = text.find('=') == std::string::npos ? "" : text.substr(text.find('=') + 1);
+            double value = 0.0;
+            if (!readPropertyValue(arg == "--property" ? arg + " " + name : arg, name, text, value, error))
+                return false;
+            o.properties.emplace_back(osgShadowSilhouette::findProperty(name)->name, value);
+        }
+        else
+            ++i;
+    }
+    return true;
+}
+
 } // namespace
+
+const std::vector<std::pair<std::string, std::string>>& propertyOptions()
+{
+    static const std::vector<std::pair<std::string, std::string>> options = {
+        {"--max-shadow-lights", "MaxShadowLights"},  {"--blocker-culling", "BlockerCulling"},
+        {"--hybrid-method", "HybridMethod"},         {"--hybrid-edges", "HybridEdgeMask"},
+        {"--depth-prepass", "DepthPrepass"},         {"--shadow-ray-offset", "ShadowRayOffset"},
+        {"--per-pixel-lighting", "PerPixelLighting"}};
+    return options;
+}
+
+std::optional<double> propertyValue(const RenderOptions& options, const std::string& name)
+{
+    std::optional<double> value;
+    for (const auto& p : options.properties)
+        if (p.first == name) value = p.second;
+    return value;
+}
+
+void applyProperties(const RenderOptions& options, osgShadowSilhouette::SilhouetteShadowTechnique& technique)
+{
+    for (const auto& p : options.properties) osgShadowSilhouette::findProperty(p.first)->set(technique, p.second);
+}
 
 bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& error)
 {
     a.read("--scene", o.scene);
     a.read("--mode", o.mode);
     std::string mapSize;
+    double size = 0.0;
     while (a.read("--map-size", mapSize))
-        if (!readProperty("--map-size", "ShadowMapSize", mapSize, o.mapSize, error)) return false;
+    {
+        if (!readPropertyValue("--map-size", "ShadowMapSize", mapSize, size, error)) return false;
+        o.mapSize = static_cast<unsigned int>(size);
+    }
     a.read("--size", o.width, o.height);
     if (o.width < 1 || o.height < 1)
     {
@@ -160,10 +215,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     double fovy;
     if (a.read("--fovy", fovy)) o.fovy = fovy;
     if (!readLights(a, o.lights, error)) return false;
-    std::string budget;
-    if (a.read("--max-shadow-lights", budget) &&
-        !readProperty("--max-shadow-lights", "MaxShadowLights", budget, o.maxShadowLights, error))
-        return false;
+    if (!readProperties(a, o, error)) return false;
     a.read("--frames", o.frames);
     a.read("--warmup", o.warmup);
     a.read("--out", o.out);
@@ -172,37 +224,22 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     a.read("--reference", o.reference);
     a.read("--diff", o.diff);
     a.read("--classes", o.classes);
-    if (!readOnOff(a, "--blocker-culling", o.blockerCulling, error)) return false;
-    if (!readOnOff(a, "--hybrid-edges", o.hybridEdgeMask, error)) return false;
-    if (!readOnOff(a, "--per-pixel-lighting", o.perPixelLighting, error)) return false;
     if (!readOnOff(a, "--skip-empty-faces", o.skipEmptyFaces, error)) return false;
-    if (a.read("--hybrid-method", o.hybridMethod) && o.hybridMethod != "auto" && o.hybridMethod != "stencil" &&
-        o.hybridMethod != "lists")
-    {
-        error = "--hybrid-method takes auto, stencil or lists";
-        return false;
-    }
-    if (a.read("--depth-prepass", o.depthPrepass) && o.depthPrepass != "auto" && o.depthPrepass != "on" &&
-        o.depthPrepass != "off")
-    {
-        error = "--depth-prepass takes auto, on or off";
-        return false;
-    }
-    if (a.read("--shadow-ray-offset", o.shadowRayOffset) && !(o.shadowRayOffset >= 0.0f && std::isfinite(o.shadowRayOffset)))
-    {
-        error = "--shadow-ray-offset takes a finite number of at least 0";
-        return false;
-    }
     if (a.read("--reference-offset", o.referenceOffset) && !(o.referenceOffset >= 0.0 && std::isfinite(o.referenceOffset)))
     {
         error = "--reference-offset takes a finite number of at least 0";
         return false;
     }
-    if (a.read("--polygon-offset", o.polygonOffsetFactor, o.polygonOffsetUnits) &&
-        !(o.polygonOffsetFactor >= 0.0f && o.polygonOffsetUnits >= 0.0f))
+    std::string factor, units;
+    double value = 0.0;
+    if (a.read("--polygon-offset", factor, units))
     {
-        error = "--polygon-offset takes two non-negative numbers, FACTOR UNITS";
-        return false;
+        for (const auto& [property, text] :
+             {std::pair{"PolygonOffsetFactor", factor}, std::pair{"PolygonOffsetUnits", units}})
+        {
+            if (!readPropertyValue("--polygon-offset", property, text, value, error)) return false;
+            o.properties.emplace_back(property, value);
+        }
     }
     if (a.read("--offscreen")) o.offscreen = true;
     if (a.read("--ground")) o.ground = true;
@@ -226,11 +263,18 @@ std::string renderOptionsUsage(const std::string& program)
       << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap]\n"
       << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"
       << "    [--light-dir X Y Z | --light-pos X Y Z [--spot-dir X Y Z] [--spot-cutoff DEG]]...\n"
-      << "    [--max-shadow-lights N] [--frames N] [--warmup N]\n"
+      << "    [--frames N] [--warmup N]\n"
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
-      << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes classes%d.png]\n"
-      << "    [--blocker-culling on|off] [--hybrid-method auto|stencil|lists] [--hybrid-edges on|off] [--polygon-offset FACTOR UNITS]\n"
-      << "    [--depth-prepass auto|on|off] [--shadow-ray-offset F] [--skip-empty-faces on|off] [--per-pixel-lighting on|off]\n"
+      << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes "
+         "classes%d.png]\n"
+      << "    [--polygon-offset FACTOR UNITS] [--skip-empty-faces on|off]\n"
+      << "    [--property NAME=VALUE]... (any property of the technique:";
+    for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties()) s << " " << p.name;
+    s << ")\n   ";
+    for (const auto& [option, property] : propertyOptions())
+        s << " [" << option << " "
+          << osgShadowSilhouette::propertyValueSyntax(*osgShadowSilhouette::findProperty(property)) << "]";
+    s << "\n"
       << "    [--moving-light] [--ground] [--check-gl-errors]\n";
     return s.str();
 }

@@ -4,10 +4,13 @@
 
 #include "Scenes.h"
 
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+
 #include <osg/ArgumentParser>
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace osshar {
@@ -35,7 +38,6 @@ struct RenderOptions
     std::optional<osg::Vec3d> eye, center, up;
     std::optional<double> fovy;
     std::vector<LightArg> lights;     ///< --light-dir / --light-pos [--spot-dir] [--spot-cutoff] (repeatable)
-    unsigned int maxShadowLights = 0; ///< --max-shadow-lights N: the technique's light budget (0: its default)
     int frames = 20;                  ///< --frames N: timed frames
     int warmup = 3;                   ///< --warmup N
     std::string out, mask;            ///< --out color.png, --mask mask.png (per light: %d, or _<i> before the extension)
@@ -44,20 +46,25 @@ struct RenderOptions
     std::string compare;              ///< --compare ref.png: compare --mask against this reference mask
     std::string reference;            ///< --reference ref.png: write the exact Embree reference mask
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
-    double referenceOffset = -1.0;    ///< --reference-offset S: the reference's offset scale (negative: ossref's default)
-    bool blockerCulling = true;       ///< --blocker-culling on|off (HYBRID)
-    bool hybridEdgeMask = true;       ///< --hybrid-edges on|off (HYBRID with triangle lists)
-    bool perPixelLighting = true;     ///< --per-pixel-lighting on|off (the property PerPixelLighting)
+    double referenceOffset = -1.0; ///< --reference-offset S: the reference's offset scale (negative: ossref's default)
     bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::Tuning)
-    std::string hybridMethod = "auto"; ///< --hybrid-method auto|stencil|lists
-    std::string depthPrepass = "auto"; ///< --depth-prepass auto|on|off
-    float shadowRayOffset = -1.0f;     ///< --shadow-ray-offset F (negative: the technique's default)
-    float polygonOffsetFactor = -1.0f; ///< --polygon-offset FACTOR UNITS of the depth pass (negative: the technique's default)
-    float polygonOffsetUnits = -1.0f;
+    /** The technique's properties set on the command line, in order, each checked against the
+     *  table of properties (osgShadowSilhouette/Properties): --property NAME=VALUE, and the
+     *  shorthands of propertyOptions() (--max-shadow-lights N, --hybrid-method lists, ...). */
+    std::vector<std::pair<std::string, double>> properties;
     bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };
+
+/** The options that set one property of the technique: {"--hybrid-method", "HybridMethod"}, ... */
+const std::vector<std::pair<std::string, std::string>>& propertyOptions();
+
+/** The value given for property @p name (the last one), if any. */
+std::optional<double> propertyValue(const RenderOptions& options, const std::string& name);
+
+/** Sets the properties of options.properties on @p technique. */
+void applyProperties(const RenderOptions& options, osgShadowSilhouette::SilhouetteShadowTechnique& technique);
 
 /** Reads the options from arguments (removing them). Returns false with a message in error
  *  on a malformed value. The first non-option argument is taken as the file. */

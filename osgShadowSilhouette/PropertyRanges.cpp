@@ -1,32 +1,21 @@
 #include <osgShadowSilhouette/PropertyRanges>
-#include <osgShadowSilhouette/ShaderConstants>
+#include <osgShadowSilhouette/Properties>
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <sstream>
 
 namespace osgShadowSilhouette {
 
-namespace {
-
-constexpr double INF = std::numeric_limits<double>::infinity();
-
-} // namespace
-
 const std::vector<NumericPropertyRange>& numericPropertyRanges()
 {
-    static const std::vector<NumericPropertyRange> ranges = {
-        {"ShadowMapSize", 1, 16384, true, "texels per side; the context's GL_MAX_TEXTURE_SIZE may lower it"},
-        {"PolygonOffsetFactor", -INF, INF, false, "negative: automatic"},
-        {"PolygonOffsetUnits", -INF, INF, false, ""},
-        {"LightNum", -1, shader::MAX_SCENE_LIGHTS - 1, true, "-1: every light"},
-        {"MaxShadowLights", 1, shader::MAX_SHADOW_LIGHTS, true, ""},
-        {"BaseTextureUnit", 1, 31, true, ""},
-        {"DebugLight", 0, shader::MAX_SCENE_LIGHTS - 1, true, "an index among the lights found"},
-        {"ShadowRayOffset", 0, 1, false, "a share of the shadowed scene's radius"},
-    };
+    static const std::vector<NumericPropertyRange> ranges = [] {
+        std::vector<NumericPropertyRange> numeric;
+        for (const PropertyInfo& p : properties())
+            if (p.numeric()) numeric.push_back({p.name, p.min, p.max, p.type != PropertyInfo::FLOAT, p.rangeNote});
+        return numeric;
+    }();
     return ranges;
 }
 

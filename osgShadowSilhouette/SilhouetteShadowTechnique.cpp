@@ -1,4 +1,5 @@
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
+#include <osgShadowSilhouette/Properties>
 #include <osgShadowSilhouette/PropertyRanges>
 #include <osgShadowSilhouette/ShaderConstants>
 
@@ -7,17 +8,15 @@
 #include "DepthMapPass.h"
 #include "LightPlanning.h"
 #include "ViewState.h"
+#include "Warnings.h"
 #include "ModePass.h"
 #include "RenderLeaves.h"
 #include "ScreenVisibility.h"
+#include "SharedResources.h"
 #include "SceneVisitors.h"
-#include "ShaderSource.h"
 
-#include <osg/ColorMask>
 #include <osg/Depth>
-#include <osg/LightSource>
 #include <osg/GLExtensions>
-#include <osg/PolygonOffset>
 #include <osg/Viewport>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
@@ -57,9 +56,7 @@ ModePass& modePassFor(SilhouetteShadowTechnique::Mode mode)
     return *passes[mode >= 0 && mode < 4 ? mode : 0];
 }
 
-constexpr unsigned int MAX_MAP_SIZE = 16384;
-
-/** Whether @p value is one property @p name takes (PropertyRanges); a warning naming the
+/** Whether @p value is one property @p name takes (Properties); a warning naming the
  *  property, the value, its range and the value kept otherwise. */
 template<typename T>
 bool acceptValue(const char* name, T value, T kept)
@@ -75,35 +72,37 @@ bool acceptValue(const char* name, T value, T kept)
     return false;
 }
 
+/** @p value if it is one of enum property @p name's values (Properties), else its default,
+ *  with a warning naming the property, the number and the values it takes. */
+template <typename E>
+E acceptEnum(const char* name, E value)
+{
+    const PropertyInfo& p = *findProperty(name);
+    if (isPropertyValue(p, double(value))) return value;
+    const E fallback = static_cast<E>(static_cast<int>(p.defaultValue));
+    OSG_WARN << "osgShadowSilhouette: " << name << " " << int(value) << " is not one of " << describePropertyValues(p)
+             << "; using " << formatPropertyValue(p, double(fallback)) << std::endl;
+    return fallback;
+}
+
 } // namespace
 
-SilhouetteShadowTechnique::SilhouetteShadowTechnique() = default;
+SilhouetteShadowTechnique::SilhouetteShadowTechnique() : _warnings(new detail::WarningLog) {}
 
-SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode)
+SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode) : SilhouetteShadowTechnique()
 {
     setMode(mode);
 }
 
 SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechnique& copy, const osg::CopyOp& copyop)
-    : osgShadow::ShadowTechnique(copy, copyop),
-      _mode(copy._mode),
-      _properties(copy._properties),
-      _shadowMapSize(copy._shadowMapSize),
-      _polygonOffsetFactor(copy._polygonOffsetFactor),
-      _polygonOffsetUnits(copy._polygonOffsetUnits),
-      _lightNum(copy._lightNum),
-      _maxShadowLights(copy._maxShadowLights),
-      _baseTextureUnit(copy._baseTextureUnit),
-      _useDefaultShading(copy._useDefaultShading),
-      _perPixelLighting(copy._perPixelLighting),
-      _debugView(copy._debugView),
-      _debugLight(copy._debugLight),
-      _blockerCulling(copy._blockerCulling),
-      _hybridMethod(copy._hybridMethod),
-      _hybridEdgeMask(copy._hybridEdgeMask),
-      _depthPrepass(copy._depthPrepass),
-      _shadowRayOffset(copy._shadowRayOffset),
-      _tuning(copy._tuning)
+    : osgShadow::ShadowTechnique(copy, copyop), _mode(copy._mode), _properties(copy._properties),
+      _shadowMapSize(copy._shadowMapSize), _polygonOffsetFactor(copy._polygonOffsetFactor),
+      _polygonOffsetUnits(copy._polygonOffsetUnits), _lightNum(copy._lightNum), _maxShadowLights(copy._maxShadowLights),
+      _baseTextureUnit(copy._baseTextureUnit), _useDefaultShading(copy._useDefaultShading),
+      _perPixelLighting(copy._perPixelLighting), _debugView(copy._debugView), _debugLight(copy._debugLight),
+      _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _hybridEdgeMask(copy._hybridEdgeMask),
+      _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _tuning(copy._tuning),
+      _warnings(new detail::WarningLog)
 {
 }
 
@@ -126,17 +125,11 @@ const char* SilhouetteShadowTechnique::modeName(Mode mode)
 
 bool SilhouetteShadowTechnique::modeFromName(const std::string& name, Mode& mode)
 {
-    static const struct { const char* a; const char* b; Mode m; } names[] = {
-        {"shadowmap", "SHADOW_MAP", SHADOW_MAP},
-        {"silhouette", "SILHOUETTE_MAP", SILHOUETTE_MAP},
-        {"hybrid", "HYBRID", HYBRID},
-        {"volume", "SHADOW_VOLUME", SHADOW_VOLUME},
-    };
-    for (const auto& n : names)
+    for (const PropertyEnumValue& e : findProperty("Mode")->enumValues)
     {
-        if (name == n.a || name == n.b)
+        if (name == e.shortName || name == e.name)
         {
-            mode = n.m;
+            mode = Mode(e.value);
             return true;
         }
     }
@@ -145,12 +138,7 @@ bool SilhouetteShadowTechnique::modeFromName(const std::string& name, Mode& mode
 
 void SilhouetteShadowTechnique::setMode(Mode mode)
 {
-    if (mode < SHADOW_MAP || mode > SHADOW_VOLUME)
-    {
-        OSG_WARN << "osgShadowSilhouette: Mode " << int(mode) << " is not a mode; using SHADOW_MAP" << std::endl;
-        mode = SHADOW_MAP;
-    }
-    _mode = mode;
+    _mode = acceptEnum("Mode", mode);
     _renderedMode = -1;
 }
 
@@ -220,7 +208,7 @@ void SilhouetteShadowTechnique::setPerPixelLighting(bool flag)
 
 void SilhouetteShadowTechnique::setDebugView(DebugView view)
 {
-    _properties.debugView = (view >= DEBUG_NONE && view <= DEBUG_CLASSES) ? view : DEBUG_NONE;
+    _properties.debugView = acceptEnum("DebugView", view);
     if (applyShadowSettings()) dirty();
 }
 
@@ -236,7 +224,7 @@ void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
 
 void SilhouetteShadowTechnique::setHybridMethod(HybridMethod method)
 {
-    _hybridMethod = (method >= HYBRID_AUTO && method <= HYBRID_TRIANGLE_LISTS) ? method : HYBRID_AUTO;
+    _hybridMethod = acceptEnum("HybridMethod", method);
 }
 
 void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)
@@ -246,7 +234,7 @@ void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)
 
 void SilhouetteShadowTechnique::setDepthPrepass(DepthPrepass prepass)
 {
-    _depthPrepass = (prepass >= DEPTH_PREPASS_AUTO && prepass <= DEPTH_PREPASS_OFF) ? prepass : DEPTH_PREPASS_AUTO;
+    _depthPrepass = acceptEnum("DepthPrepass", prepass);
 }
 
 void SilhouetteShadowTechnique::setShadowRayOffset(float offset)
@@ -288,47 +276,9 @@ void SilhouetteShadowTechnique::recordStatistics(const Statistics& stats)
     target->setAttribute(frame, STATS_SILHOUETTE_EDGES, stats.silhouetteEdges);
 }
 
-void SilhouetteShadowTechnique::warnNonFinite(const osg::Drawable& drawable) const
-{
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
-    if (!_warnedNonFinite.insert(&drawable).second) return;
-    OSG_WARN << "osgShadowSilhouette: geometry \"" << drawable.getName()
-             << "\" has vertices with NaN or infinite coordinates; it casts no shadow" << std::endl;
-}
-
-void SilhouetteShadowTechnique::warnRefusedLight(osgUtil::CullVisitor& cv, const osg::Light& light,
-                                                 const std::string& refusal) const
-{
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
-    if (!_warnedLights.insert(&light).second) return;
-    struct FindSource : public osg::NodeVisitor
-    {
-        explicit FindSource(const osg::Light* l) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), light(l)
-        {
-            setNodeMaskOverride(~0u);
-        }
-        void apply(osg::LightSource& ls) override
-        {
-            if (ls.getLight() == light && !found) found = &ls;
-            traverse(ls);
-        }
-        const osg::Light* light;
-        const osg::LightSource* found = nullptr;
-    } find(&light);
-    if (!cv.getNodePath().empty()) cv.getNodePath().front()->accept(find);
-    const std::string source = !find.found                   ? "no LightSource found"
-                               : find.found->getName().empty() ? "an unnamed LightSource"
-                                                               : "LightSource \"" + find.found->getName() + "\"";
-    OSG_WARN << "osgShadowSilhouette: light " << light.getLightNum() << " (" << source << ") has a non-finite "
-             << refusal << "; it lights nothing and casts no shadow" << std::endl;
-}
-
 void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
 {
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
-    if (_warned[key]) return;
-    _warned[key] = true;
-    OSG_WARN << "osgShadowSilhouette: " << message << std::endl;
+    _warnings->once(key, message);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -337,106 +287,20 @@ void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) co
 void SilhouetteShadowTechnique::init()
 {
     if (!_shadowedScene) return;
-
-    _receiverProgram = new osg::Program;
-    _receiverProgram->setName("osgShadowSilhouette receiver");
-    _receiverProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
-    _receiverProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_RECEIVER_FRAG));
-    linkShadowShaders(_receiverProgram.get());
-    _listStateSet = TriangleListPass::createSharedStateSet();
-    _listFrontOnlyStateSet = new osg::StateSet;
-    _listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
-    _silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
-    _defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
-    _defaultNeighbourhoodTexture = SilhouetteMapPass::createDefaultNeighbourhoodTexture();
-    _litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
-
-    _stencilProgram = new osg::Program;
-    _stencilProgram->setName("osgShadowSilhouette stencil passes");
-    _stencilProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_RECEIVER_VERT));
-    _stencilProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_STENCIL_FRAG));
-    linkShadowShaders(_stencilProgram.get());
-    // The lighting equation in the receivers' vertex and fragment stages, one source
-    // (PerPixelLighting chooses where it runs).
-    for (const osg::ref_ptr<osg::Shader>& lighting :
-         {detail::loadShader(osg::Shader::VERTEX, shader::FILE_LIGHTING),
-          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_LIGHTING),
-          detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_FRAGMENT_LIGHTING)})
-    {
-        _receiverProgram->addShader(lighting.get());
-        _stencilProgram->addShader(lighting.get());
-    }
-    _volumeProgram = new osg::Program;
-    _volumeProgram->setName("osgShadowSilhouette shadow volumes");
-    _volumeProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_VOLUME_VERT));
-    _volumeProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_VOLUME_FRAG));
-
-    // Each pass sets its mode's polygon offset factor (cullDepthMap()).
-    _depthPassStateSet = detail::createDepthPassStateSet(getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits);
-    _prepassProgram = new osg::Program;
-    _prepassProgram->setName("osgShadowSilhouette depth prepass");
-    _prepassProgram->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_DEPTH_VERT));
-    _prepassProgram->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_DEPTH_FRAG));
-    _litDummyTexture = detail::createLitTexture();
-    for (osg::Program* program : {_volumeProgram.get(), _prepassProgram.get()}) watchProgramLink(program);
-    for (osg::StateSet* ss : {_depthPassStateSet.get(), _listStateSet.get(), _silhouetteMapStateSet.get(),
-                              dynamic_cast<osg::StateSet*>(_silhouetteMapStateSet->getUserData())})
-        if (ss) watchProgramLink(dynamic_cast<osg::Program*>(ss->getAttribute(osg::StateAttribute::PROGRAM)));
+    _shared = detail::createSharedResources(
+        getEffectivePolygonOffsetFactor(SHADOW_MAP), _polygonOffsetUnits,
+        [this](osg::Program* program) { linkShadowShaders(program); },
+        [this](osg::Program* program) { watchProgramLink(program); });
 
     TagShaderDefinesVisitor tagger;
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
-    _alphaTested.assign(tagger.alphaTested.begin(), tagger.alphaTested.end());
+    _warnings->setAlphaTested({tagger.alphaTested.begin(), tagger.alphaTested.end()});
 
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
         _viewDataMap.clear(); // rebuilt with the new settings on the next cull
     }
     _dirty = false;
-}
-
-osg::ref_ptr<osg::StateSet> SilhouetteShadowTechnique::createPrepassStateSet() const
-{
-    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
-    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
-    ss->setAttributeAndModes(_prepassProgram.get(), overrideOn); // ftransform(), as the receivers' program
-    ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
-    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested receivers' cut-outs
-    ss->setRenderBinDetails(DEPTH_PREPASS_BIN, "RenderBin", osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
-    return ss;
-}
-
-void SilhouetteShadowTechnique::warnAlphaTested(bool hybrid, bool lists) const
-{
-    // One message per mode for the drawables not yet named in it: a forest of billboards is
-    // hundreds of alpha-tested drawables.
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_warnMutex);
-    std::vector<std::string> names;
-    std::size_t count = 0, unnamed = 0;
-    for (const osg::observer_ptr<osg::Drawable>& weak : _alphaTested)
-    {
-        osg::ref_ptr<osg::Drawable> drawable;
-        const int variant = hybrid ? (lists ? 2 : 1) : 0;
-        if (!weak.lock(drawable) || !_warnedAlphaTested.insert({variant, drawable.get()}).second) continue;
-        ++count;
-        if (drawable->getName().empty())
-            ++unnamed;
-        else
-            names.push_back("'" + drawable->getName() + "'");
-    }
-    if (count == 0) return;
-    constexpr std::size_t shown = 4;
-    std::string list;
-    for (std::size_t i = 0; i < names.size() && i < shown; ++i) list += (i ? ", " : "") + names[i];
-    if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more named";
-    if (unnamed > 0) list += (list.empty() ? "" : ", ") + std::to_string(unnamed) + " unnamed";
-    OSG_WARN << "osgShadowSilhouette: " << (hybrid ? "HYBRID" : "SHADOW_VOLUME") << ": " << count
-             << (count == 1 ? " drawable is" : " drawables are") << " alpha-tested (GL_ALPHA_TEST): " << list << "; "
-             << (!hybrid ? "stencil shadow volumes cannot cut their shapes out, so they cast their whole triangles"
-                 : lists  ? "where only their triangles stand between a silhouette pixel and the light, the triangle "
-                            "lists keep the shadow map's answer there, not an exact one"
-                          : "the stencil volumes of the exact test take their triangles as opaque, so light through "
-                            "their cut-outs is lost along the shadows' edges")
-             << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
 void SilhouetteShadowTechnique::update(osg::NodeVisitor& nv)
@@ -474,19 +338,8 @@ void SilhouetteShadowTechnique::applyToGLObjects(const GLObjectsOp& op) const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
     ++_glGeneration; // the maps are rendered again before they are read
-    op(_receiverProgram.get());
-    op(_depthPassStateSet.get());
-    op(_prepassProgram.get());
-    op(_litDummyTexture.get());
-    op(_silhouetteMapStateSet.get());
-    op(_defaultSilhouetteTexture.get());
-    op(_defaultNeighbourhoodTexture.get());
-    op(_litRawDepthTexture.get());
-    op(_listStateSet.get());
-    op(_listFrontOnlyStateSet.get());
+    if (_shared) _shared->forEachGLObjectHolder(op);
     op(_listedDrawables.get());
-    op(_stencilProgram.get());
-    op(_volumeProgram.get());
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> shaders(_shadowShadersMutex);
         op(_shadowFragmentShader.get());
@@ -553,9 +406,9 @@ ViewData* SilhouetteShadowTechnique::createViewData()
     layout.maxShadowLights = _maxShadowLights;
     layout.mapSize = _shadowMapSize;
     layout.mapBinding = mapBinding();
-    layout.receiverProgram = _useDefaultShading ? _receiverProgram.get() : nullptr;
-    layout.litTexture = _litDummyTexture.get();
-    layout.prepassStateSet = createPrepassStateSet();
+    layout.receiverProgram = _useDefaultShading ? _shared->receiverProgram.get() : nullptr;
+    layout.litTexture = _shared->litDepthTexture.get();
+    layout.prepassStateSet = _shared->createPrepassStateSet();
     return detail::createViewData(layout).release();
 }
 
@@ -564,7 +417,7 @@ ViewData* SilhouetteShadowTechnique::createViewData()
 
 void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 {
-    if (_dirty || !_receiverProgram)
+    if (_dirty || !_shared)
     {
         _shadowedScene->osg::Group::traverse(cv); // init() has not run yet (it runs in update)
         return;
@@ -597,9 +450,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     services.warnOnce = warner();
     services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
     services.applicationPrograms = [this]() { return hasApplicationPrograms(); };
-    services.warnAlphaTested = [this](bool hybrid, bool lists) {
-        if (!_alphaTested.empty()) warnAlphaTested(hybrid, lists);
-    };
+    services.warnAlphaTested = [log = _warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
     ModeFrame mf{cv, vd, frame, stats, eye, settings, services};
     ModePass& mode = modePassFor(frame.mode);
     mode.planFrame(mf);
@@ -616,8 +467,10 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisitor& cv, ViewData& vd, Statistics& stats)
 {
     std::vector<int> refused;
-    std::vector<FoundLight> lights = detail::collectLights(
-        cv, refused, [&](const osg::Light& light, const std::string& refusal) { warnRefusedLight(cv, light, refusal); });
+    std::vector<FoundLight> lights =
+        detail::collectLights(cv, refused, [&](const osg::Light& light, const std::string& refusal) {
+            _warnings->refusedLight(cv.getNodePath().empty() ? nullptr : cv.getNodePath().front(), light, refusal);
+        });
     // The receiver shading lights only the lights found (oss_lightIndex); drawables under a
     // program of their own, or all with UseDefaultShading false, are lit by OpenGL, which
     // would spread a refused light's NaN: its GL light is turned off for them.
@@ -649,7 +502,7 @@ SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::ve
 
 detail::Warn SilhouetteShadowTechnique::warner() const
 {
-    return [this](int key, const std::string& message) { warnOnce(key, message); };
+    return [log = _warnings.get()](int key, const std::string& message) { log->once(key, message); };
 }
 
 detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) const
@@ -669,14 +522,14 @@ detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) cons
     s.listSlots = listSlots();
     s.recordingStats = _stats.valid();
     s.shadowedScene = _shadowedScene;
-    s.silhouetteMapStateSet = _silhouetteMapStateSet.get();
-    s.listStateSet = _listStateSet.get();
-    s.listFrontOnlyStateSet = _listFrontOnlyStateSet.get();
+    s.silhouetteMapStateSet = _shared->silhouetteMapStateSet.get();
+    s.listStateSet = _shared->listStateSet.get();
+    s.listFrontOnlyStateSet = _shared->listFrontOnlyStateSet.get();
     s.listedDrawables = _listedDrawables.get();
-    s.stencilProgram = _stencilProgram.get();
-    s.volumeProgram = _volumeProgram.get();
-    s.defaultSilhouetteTexture = _defaultSilhouetteTexture.get();
-    s.defaultNeighbourhoodTexture = _defaultNeighbourhoodTexture.get();
+    s.stencilProgram = _shared->stencilProgram.get();
+    s.volumeProgram = _shared->volumeProgram.get();
+    s.defaultSilhouetteTexture = _shared->defaultSilhouetteTexture.get();
+    s.defaultNeighbourhoodTexture = _shared->defaultNeighbourhoodTexture.get();
     return s;
 }
 
@@ -685,9 +538,10 @@ void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)
     osgUtil::CullVisitor& cv = mf.cv;
     ViewData& vd = mf.vd;
     const FrameContext& frame = mf.frame;
-    if (frame.stencil && !vd.stencil) vd.stencil = new StencilShadowPasses(_stencilProgram.get(), _volumeProgram.get());
+    if (frame.stencil && !vd.stencil)
+        vd.stencil = new StencilShadowPasses(_shared->stencilProgram.get(), _shared->volumeProgram.get());
     if (frame.stencil)
-        vd.receiverPassStateSet->setAttributeAndModes(_stencilProgram.get(),
+        vd.receiverPassStateSet->setAttributeAndModes(_shared->stencilProgram.get(),
                                                       osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
@@ -719,13 +573,13 @@ void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, c
     mf.eye.slotCapacity = capacity;
     // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
     osg::Texture2D* second = mode.defaultSecondMap(mf.settings);
-    std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _defaultSilhouetteTexture.get());
+    std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _shared->defaultSilhouetteTexture.get());
     for (unsigned int slot = 0; slot < vd.passes.size(); ++slot)
     {
         // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
         if (slot < capacity)
-            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, litTexture(mode.rawDepthMaps()),
-                                                             mapBinding());
+            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot,
+                                                             _shared->litTexture(mode.rawDepthMaps()), mapBinding());
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
@@ -791,7 +645,7 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameCont
     frame.nonFinite = casters.nonFinite;
     if (!casters.billboards.empty())
         frame.billboards = std::make_shared<const BillboardMatrices>(std::move(casters.billboards));
-    for (const osg::Drawable* drawable : frame.nonFinite) warnNonFinite(*drawable);
+    for (const osg::Drawable* drawable : frame.nonFinite) _warnings->nonFinite(*drawable);
     // ShadowSettings' MaximumShadowMapDistance bounds the maps' eye range; the volumes reach any distance.
     frame.region = detail::visibleReceiverRegion(cv, frame.receivers, settings->getComputeNearFarModeOverride(),
                                                  frame.mode != SHADOW_VOLUME ? _maximumShadowDistance : DBL_MAX);
@@ -825,7 +679,7 @@ void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const Li
 {
     ViewData& vd = mf.vd;
     LightPass& pass = vd.passes[slot];
-    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(), *_depthPassStateSet, _shadowedScene);
+    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(), *_shared->depthPassStateSet, _shadowedScene);
     pass.frustum = frustum;
     if (!mode.drawsMaps()) return; // volumes only, no map
     vd.slotInUse[slot] = true;
@@ -912,7 +766,7 @@ void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vect
             ss.removeTextureAttribute(silhouetteUnit(slot), osg::StateAttribute::TEXTURE);
         else
             ss.setTextureAttributeAndModes(silhouetteUnit(slot),
-                                           slot < maps.size() ? maps[slot] : _defaultSilhouetteTexture.get(),
+                                           slot < maps.size() ? maps[slot] : _shared->defaultSilhouetteTexture.get(),
                                            mapBinding());
     }
 }

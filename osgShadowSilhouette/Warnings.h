@@ -1,9 +1,19 @@
-// Internal: the technique's one-time warnings, as the passes and planners raise them.
+// Internal: the technique's one-time warnings, as the passes and planners raise them, and
+// the log that gives each once.
 #ifndef OSGSHADOWSILHOUETTE_WARNINGS_H
 #define OSGSHADOWSILHOUETTE_WARNINGS_H
 
+#include <osg/Drawable>
+#include <osg/Light>
+#include <osg/Node>
+#include <osg/observer_ptr>
+#include <OpenThreads/Mutex>
+
 #include <functional>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace osgShadowSilhouette {
 namespace detail {
@@ -29,6 +39,38 @@ enum WarningKey
 
 /** Raises warning @p key with @p message (the technique's warnOnce()). */
 using Warn = std::function<void(int key, const std::string& message)>;
+
+/** What a technique has warned about, so that each warning is given once: by key, by
+ *  drawable or by light. Thread-safe (cull threads of several views share it). */
+class WarningLog
+{
+public:
+    /** Warning @p key, the first time it is raised. */
+    void once(int key, const std::string& message);
+
+    /** Once per drawable: its NaN or infinite vertices leave it out of casting. */
+    void nonFinite(const osg::Drawable& drawable);
+
+    /** Once per light: @p refusal (its non-finite value) leaves it out; names its
+     *  LightSource, found below @p root (may be null). */
+    void refusedLight(osg::Node* root, const osg::Light& light, const std::string& refusal);
+
+    /** The drawables under GL_ALPHA_TEST (found by the technique's init()). */
+    void setAlphaTested(std::vector<osg::observer_ptr<osg::Drawable>> drawables);
+    /** One message per mode (SHADOW_VOLUME; HYBRID with stencil volumes or with @p lists)
+     *  naming the alpha-tested drawables not yet named in it: the exact tests take their
+     *  triangles whole. */
+    void alphaTested(bool hybrid, bool lists);
+
+private:
+    OpenThreads::Mutex _mutex;
+    std::set<int> _keys;
+    std::set<const osg::Drawable*> _nonFinite;
+    std::set<const osg::Light*> _lights;
+    std::vector<osg::observer_ptr<osg::Drawable>> _alphaTested;
+    std::set<std::pair<int, const osg::Drawable*>>
+        _alphaTestedNamed; ///< (0 volumes, 1 HYBRID stencil, 2 lists; drawable)
+};
 
 } // namespace detail
 } // namespace osgShadowSilhouette

@@ -105,25 +105,10 @@ int main(int argc, char** argv)
     }
     if (technique)
     {
-        technique->setBlockerCulling(options.blockerCulling);
-        technique->setHybridEdgeMask(options.hybridEdgeMask);
-        technique->setPerPixelLighting(options.perPixelLighting);
         SilhouetteShadowTechnique::Tuning tuning = technique->getTuning();
         tuning.skipEmptyFaces = options.skipEmptyFaces;
         technique->setTuning(tuning);
-        technique->setDepthPrepass(options.depthPrepass == "on"    ? SilhouetteShadowTechnique::DEPTH_PREPASS_ON
-                                   : options.depthPrepass == "off" ? SilhouetteShadowTechnique::DEPTH_PREPASS_OFF
-                                                                   : SilhouetteShadowTechnique::DEPTH_PREPASS_AUTO);
-        if (options.shadowRayOffset >= 0.0f) technique->setShadowRayOffset(options.shadowRayOffset);
-        if (options.polygonOffsetFactor >= 0.0f)
-        {
-            technique->setPolygonOffsetFactor(options.polygonOffsetFactor);
-            technique->setPolygonOffsetUnits(options.polygonOffsetUnits);
-        }
-        technique->setHybridMethod(options.hybridMethod == "lists"     ? SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS
-                                   : options.hybridMethod == "stencil" ? SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES
-                                                                       : SilhouetteShadowTechnique::HYBRID_AUTO);
-        if (options.maxShadowLights > 0) technique->setMaxShadowLights(options.maxShadowLights);
+        osshar::applyProperties(options, *technique);
     }
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
     const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||

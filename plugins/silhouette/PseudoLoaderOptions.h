@@ -13,11 +13,12 @@ namespace osssil {
 /** One "Key=value" option the pseudo-loader knows, with its help text. */
 struct OptionDescription
 {
-    const char* key;
-    const char* help;
+    std::string key;
+    std::string help;
 };
 
-/** The options the pseudo-loader knows (keys are matched case-insensitively). */
+/** The options the pseudo-loader knows: one per property of the technique (the table of
+ *  osgShadowSilhouette/Properties; keys are matched case-insensitively), and Report=. */
 const std::vector<OptionDescription>& optionDescriptions();
 
 /** The Key=value pairs of an option string, split at spaces; words without '=' are

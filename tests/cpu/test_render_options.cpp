@@ -2,6 +2,8 @@
 // values that do not parse, options at the end without their value, a second file name.
 #include "RenderOptions.h"
 
+#include <osgShadowSilhouette/Properties>
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -55,7 +57,30 @@ TEST(RenderOptions, AGoodLineParses)
     EXPECT_EQ(p.options.lights[0].vector, osg::Vec3d(0, -1, 2));
     EXPECT_TRUE(p.options.offscreen);
     EXPECT_TRUE(p.options.ground);
-    EXPECT_FALSE(p.options.perPixelLighting);
+    EXPECT_EQ(osshar::propertyValue(p.options, "PerPixelLighting"), 0.0);
+    EXPECT_EQ(osshar::propertyValue(p.options, "HybridMethod"), std::nullopt);
+}
+
+// Every property of the technique can be set by --property NAME=VALUE, read by its table row,
+// in order with the shorthands: the last one given wins.
+TEST(RenderOptions, PropertiesComeFromTheTable)
+{
+    using Technique = osgShadowSilhouette::SilhouetteShadowTechnique;
+    const Parsed p = parse({"--property", "hybridmethod=lists", "--hybrid-method", "stencil", "--property",
+                            "DebugView=mask", "--polygon-offset", "2", "-1", "--property", "ShadowRayOffset=2.5e-4"});
+    ASSERT_TRUE(p.ok) << p.error;
+    EXPECT_EQ(osshar::propertyValue(p.options, "HybridMethod"), double(Technique::HYBRID_STENCIL_VOLUMES));
+    EXPECT_EQ(osshar::propertyValue(p.options, "DebugView"), double(Technique::DEBUG_SHADOW_MASK));
+    EXPECT_EQ(osshar::propertyValue(p.options, "PolygonOffsetFactor"), 2.0);
+    EXPECT_EQ(osshar::propertyValue(p.options, "PolygonOffsetUnits"), -1.0);
+    osg::ref_ptr<Technique> t = new Technique;
+    osshar::applyProperties(p.options, *t);
+    EXPECT_EQ(t->getHybridMethod(), Technique::HYBRID_STENCIL_VOLUMES);
+    EXPECT_EQ(t->getDebugView(), Technique::DEBUG_SHADOW_MASK);
+    EXPECT_EQ(t->getPolygonOffsetFactor(), 2.0f);
+    EXPECT_EQ(t->getShadowRayOffset(), 2.5e-4f);
+    for (const auto& [option, property] : osshar::propertyOptions())
+        EXPECT_NE(osgShadowSilhouette::findProperty(property), nullptr) << option << " sets no property";
 }
 
 TEST_P(RefusedLines, WithAMessageNamingTheProblem)
@@ -77,7 +102,15 @@ INSTANTIATE_TEST_SUITE_P(
                       BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size -5 is out of range (1 to 16384"},
                       BadLine{"WrappingMapSize", {"--map-size", "4294967297"}, "--map-size 4294967297 is out of range"},
                       BadLine{"TooManyLights", {"--max-shadow-lights", "9"}, "--max-shadow-lights 9 is out of range"},
-                      BadLine{"SizeNotNumbers", {"--size", "wide", "tall"}, "--size"}),
+                      BadLine{"SizeNotNumbers", {"--size", "wide", "tall"}, "--size"},
+                      BadLine{"UnknownProperty", {"--property", "Sharpness=3"}, "no property is named Sharpness"},
+                      BadLine{"UnknownMethod", {"--hybrid-method", "fast"}, "--hybrid-method fast is not one of"},
+                      BadLine{"NotOnOff", {"--blocker-culling", "maybe"}, "--blocker-culling maybe is not one of TRUE"},
+                      BadLine{"PropertyOutOfRange",
+                              {"--property", "BaseTextureUnit=40"},
+                              "--property BaseTextureUnit 40 is out of range (1 to 31"},
+                      BadLine{
+                          "NaNRayOffset", {"--shadow-ray-offset", "nan"}, "--shadow-ray-offset nan is not a finite"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return std::string(info.param.name); });
 
 TEST(RenderOptions, UsageListsEveryBuiltInScene)

@@ -1,10 +1,9 @@
 // The properties of SilhouetteShadowTechnique as the serializer tests see them: one row per
-// property, with a value that is not the default. A property added to the technique needs a
-// row here and a line in plugins/serializers/SilhouetteShadowTechnique.cpp;
-// test_serializer.cpp fails until both exist.
+// row of the table of properties (osgShadowSilhouette/Properties), with its example value.
 #ifndef OSS_TESTS_SERIALIZER_PROPERTIES_H
 #define OSS_TESTS_SERIALIZER_PROPERTIES_H
 
+#include <osgShadowSilhouette/Properties>
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 
 #include <cstdlib>
@@ -25,39 +24,20 @@ struct PropertyRow
     std::function<std::string(const Technique&)> get;///< the getter's value as text
 };
 
-template<typename T>
-std::string propertyText(const T& value)
-{
-    std::ostringstream s;
-    s.precision(9);
-    s << value;
-    return s.str();
-}
-
-#define OSS_PROPERTY_ROW(PROP, VALUE)                                       \
-    osstest::PropertyRow{#PROP, [](osstest::Technique& t) { t.set##PROP(VALUE); }, \
-                         [](const osstest::Technique& t) { return osstest::propertyText(t.get##PROP()); }}
-
+/** One row per property of the table (osgShadowSilhouette/Properties), set to its example:
+ *  a property added to the table is covered by every test of these rows. */
 inline const std::vector<PropertyRow>& propertyRows()
 {
-    static const std::vector<PropertyRow> rows = {
-        OSS_PROPERTY_ROW(Mode, Technique::HYBRID),
-        OSS_PROPERTY_ROW(ShadowMapSize, 1024u),
-        OSS_PROPERTY_ROW(PolygonOffsetFactor, 2.25f),
-        OSS_PROPERTY_ROW(PolygonOffsetUnits, 7.5f),
-        OSS_PROPERTY_ROW(LightNum, 3),
-        OSS_PROPERTY_ROW(MaxShadowLights, 2u),
-        OSS_PROPERTY_ROW(BaseTextureUnit, 5u),
-        OSS_PROPERTY_ROW(UseDefaultShading, false),
-        OSS_PROPERTY_ROW(DebugView, Technique::DEBUG_SHADOW_MASK),
-        OSS_PROPERTY_ROW(DebugLight, 2u),
-        OSS_PROPERTY_ROW(BlockerCulling, false),
-        OSS_PROPERTY_ROW(HybridMethod, Technique::HYBRID_TRIANGLE_LISTS),
-        OSS_PROPERTY_ROW(HybridEdgeMask, false),
-        OSS_PROPERTY_ROW(DepthPrepass, Technique::DEPTH_PREPASS_OFF),
-        OSS_PROPERTY_ROW(ShadowRayOffset, 2.5e-4f),
-        OSS_PROPERTY_ROW(PerPixelLighting, false),
-    };
+    static const std::vector<PropertyRow> rows = [] {
+        std::vector<PropertyRow> list;
+        for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties())
+        {
+            list.push_back(
+                {p.name, [&p](Technique& t) { p.set(t, p.example); },
+                 [&p](const Technique& t) { return osgShadowSilhouette::formatPropertyValue(p, p.get(t)); }});
+        }
+        return list;
+    }();
     return rows;
 }
 

@@ -211,8 +211,11 @@ TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)
     Technique* t = techniqueOf(scene.get());
     ASSERT_NE(t, nullptr);
     EXPECT_NE(capture.text().find("ShadowMapSize big is not a finite number"), std::string::npos) << capture.text();
-    EXPECT_NE(capture.text().find("Mode=fancy"), std::string::npos) << capture.text();
-    EXPECT_NE(capture.text().find("DebugView=xray"), std::string::npos) << capture.text();
+    EXPECT_NE(capture.text().find("Mode fancy is not one of SHADOW_MAP, SILHOUETTE_MAP, HYBRID, SHADOW_VOLUME (or "
+                                  "shadowmap, silhouette, hybrid, volume); keeping SHADOW_MAP"),
+              std::string::npos)
+        << capture.text();
+    EXPECT_NE(capture.text().find("DebugView xray is not one of DEBUG_NONE"), std::string::npos) << capture.text();
     EXPECT_NE(capture.text().find("MaxShadowLights 99 is out of range (1 to 8, whole); keeping 4"), std::string::npos)
         << capture.text();
     EXPECT_EQ(t->getShadowMapSize(), osg::ref_ptr<Technique>(new Technique)->getShadowMapSize());

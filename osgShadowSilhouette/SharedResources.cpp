@@ -1,0 +1,83 @@
+#include "SharedResources.h"
+
+#include "DepthMapPass.h"
+#include "ShaderSource.h"
+
+#include <osgShadowSilhouette/ShaderConstants>
+#include <osgShadowSilhouette/SilhouetteMapPass>
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+#include <osgShadowSilhouette/TriangleListPass>
+
+#include <osg/ColorMask>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+namespace {
+
+osg::ref_ptr<osg::Program> createProgram(const char* name, const char* vertex, const char* fragment)
+{
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName(name);
+    program->addShader(loadShader(osg::Shader::VERTEX, vertex));
+    program->addShader(loadShader(osg::Shader::FRAGMENT, fragment));
+    return program;
+}
+
+} // namespace
+
+osg::ref_ptr<osg::StateSet> SharedResources::createPrepassStateSet() const
+{
+    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    ss->setAttributeAndModes(prepassProgram.get(), overrideOn); // ftransform(), as the receivers' program
+    ss->setAttribute(new osg::ColorMask(false, false, false, false), overrideOn);
+    ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0)); // alpha-tested receivers' cut-outs
+    ss->setRenderBinDetails(SilhouetteShadowTechnique::DEPTH_PREPASS_BIN, "RenderBin",
+                            osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
+    return ss;
+}
+
+osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, float polygonOffsetUnits,
+                                                    const std::function<void(osg::Program*)>& linkShadowShaders,
+                                                    const std::function<void(osg::Program*)>& watchLink)
+{
+    osg::ref_ptr<SharedResources> r = new SharedResources;
+    r->receiverProgram =
+        createProgram("osgShadowSilhouette receiver", shader::FILE_RECEIVER_VERT, shader::FILE_RECEIVER_FRAG);
+    r->stencilProgram =
+        createProgram("osgShadowSilhouette stencil passes", shader::FILE_RECEIVER_VERT, shader::FILE_STENCIL_FRAG);
+    r->volumeProgram =
+        createProgram("osgShadowSilhouette shadow volumes", shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
+    r->prepassProgram =
+        createProgram("osgShadowSilhouette depth prepass", shader::FILE_DEPTH_VERT, shader::FILE_DEPTH_FRAG);
+    // The lighting equation in the receivers' vertex and fragment stages, one source
+    // (PerPixelLighting chooses where it runs).
+    const osg::ref_ptr<osg::Shader> lighting[] = {loadShader(osg::Shader::VERTEX, shader::FILE_LIGHTING),
+                                                  loadShader(osg::Shader::FRAGMENT, shader::FILE_LIGHTING),
+                                                  loadShader(osg::Shader::FRAGMENT, shader::FILE_FRAGMENT_LIGHTING)};
+    for (osg::Program* program : {r->receiverProgram.get(), r->stencilProgram.get()})
+    {
+        linkShadowShaders(program);
+        for (const osg::ref_ptr<osg::Shader>& shader : lighting) program->addShader(shader.get());
+    }
+    // Each pass sets its mode's polygon offset factor (cullDepthMap()).
+    r->depthPassStateSet = createDepthPassStateSet(polygonOffsetFactor, polygonOffsetUnits);
+    r->silhouetteMapStateSet = SilhouetteMapPass::createSharedStateSet();
+    r->listStateSet = TriangleListPass::createSharedStateSet();
+    r->listFrontOnlyStateSet = new osg::StateSet;
+    r->listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
+    r->litDepthTexture = createLitTexture();
+    r->litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
+    r->defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
+    r->defaultNeighbourhoodTexture = SilhouetteMapPass::createDefaultNeighbourhoodTexture();
+
+    for (osg::Program* program : {r->volumeProgram.get(), r->prepassProgram.get()}) watchLink(program);
+    for (osg::StateSet* ss : {r->depthPassStateSet.get(), r->listStateSet.get(), r->silhouetteMapStateSet.get(),
+                              dynamic_cast<osg::StateSet*>(r->silhouetteMapStateSet->getUserData())})
+        if (ss) watchLink(dynamic_cast<osg::Program*>(ss->getAttribute(osg::StateAttribute::PROGRAM)));
+    return r;
+}
+
+} // namespace detail
+} // namespace osgShadowSilhouette
