@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace osshar {
@@ -230,6 +231,19 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
         error = "--reference-offset takes a finite number of at least 0";
         return false;
     }
+    std::string lightSize;
+    if (a.read("--light-size", lightSize))
+    {
+        char* end = nullptr;
+        o.lightSize = std::strtod(lightSize.c_str(), &end);
+        if (lightSize.empty() || *end != '\0' || !(o.lightSize >= 0.0 && std::isfinite(o.lightSize)))
+        {
+            error = "--light-size " + lightSize + " is not a finite number of at least 0 (0: a hard shadow)";
+            return false;
+        }
+    }
+    a.read("--visibility", o.visibility);
+    a.read("--reference-visibility", o.referenceVisibility);
     std::string factor, units;
     double value = 0.0;
     if (a.read("--polygon-offset", factor, units))
@@ -267,6 +281,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes "
          "classes%d.png]\n"
+      << "    [--light-size S] [--visibility vis%d.png] [--reference-visibility ref%d.png]\n"
       << "    [--polygon-offset FACTOR UNITS] [--skip-empty-faces on|off]\n"
       << "    [--property NAME=VALUE]... (any property of the technique:";
     for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties()) s << " " << p.name;

@@ -5,7 +5,9 @@
  *       --out color.png --mask mask.png --reference ref.png --compare ref.png
  *
  * Prints frame_ms_median=..., gpu_ms_median=... and, with --compare or --reference,
- * wrong_pct=... against the exact ray-cast reference.
+ * wrong_pct=... against the exact ray-cast reference; with --visibility and
+ * --reference-visibility (and --light-size S), vis_mae=... against the exact visibility of a
+ * light with a size. The modes' shadows are hard: their visibility is 0 or 1.
  *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
@@ -75,6 +77,43 @@ int runWindowed(osshar::PreparedScene& scene, osg::Node* root, SilhouetteShadowT
     return viewer.run();
 }
 
+/** --visibility and --reference-visibility of light @p index: @p mask (the mode's hard answer,
+ *  so v is 0 or 1) as a visibility mask, and the exact visibility of the light at
+ *  --light-size; with both, their scores (MEASURE.md, "Soft shadows"). 0, or 1 on failure. */
+int writeVisibility(const osshar::RenderOptions& options, const osshar::PreparedScene& scene,
+                    const ossref::Camera& camera, const ossref::Mask& mask, unsigned int index)
+{
+    int status = 0;
+    ossref::VisibilityMask candidate, reference;
+    if (!options.visibility.empty() && !mask.empty())
+    {
+        candidate = ossref::visibilityFromMask(mask);
+        if (!ossref::writeVisibility(candidate, perLightName(options.visibility, index)))
+            std::cerr << "cannot write " << perLightName(options.visibility, index) << "\n", status = 1;
+    }
+    if (!options.referenceVisibility.empty())
+    {
+        ossref::Light light = osshar::referenceLight(scene.lights[index]);
+        light.size = options.lightSize;
+        reference = ossref::computeReferenceVisibility(*scene.content, camera, light, scene.castsMask,
+                                                       scene.referenceTraversalMask());
+        if (!ossref::writeVisibility(reference, perLightName(options.referenceVisibility, index)))
+            std::cerr << "cannot write " << perLightName(options.referenceVisibility, index) << "\n", status = 1;
+    }
+    if (candidate.empty() || reference.empty()) return status;
+    const ossref::VisibilityComparison c = ossref::compareVisibility(reference, candidate);
+    if (!c.valid)
+    {
+        std::cerr << "osgsilhouetteshadow: cannot compare visibility: " << c.error << "\n";
+        return 1;
+    }
+    std::printf("light=%u light_size=%g vis_mae=%.5f vis_mae_penumbra=%.5f vis_p99_penumbra=%.5f "
+                "penumbra_pixels=%lld hard_wrong_pct=%.4f\n",
+                index, options.lightSize, c.visMae, c.visMaePenumbra, c.visP99Penumbra, c.penumbraPixels,
+                c.hardWrongPct);
+    return status;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -111,8 +150,9 @@ int main(int argc, char** argv)
         osshar::applyProperties(options, *technique);
     }
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
-    const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() || !options.reference.empty() ||
-                       !options.classes.empty();
+    const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() ||
+                       !options.reference.empty() || !options.classes.empty() || !options.visibility.empty() ||
+                       !options.referenceVisibility.empty();
     if (!batch) return runWindowed(scene, root.get(), technique.get());
 
     osshar::Renderer renderer(options.width, options.height, options.offscreen);
@@ -182,7 +222,8 @@ int main(int argc, char** argv)
         osshar::PeerMask peerMask;
         // A mask is rendered for --mask, --compare and --diff, and for --reference to score
         // it; --mode none with --reference alone writes the reference only.
-        const bool maskWanted = !options.mask.empty() || !options.compare.empty() || !options.diff.empty();
+        const bool maskWanted =
+            !options.mask.empty() || !options.compare.empty() || !options.diff.empty() || !options.visibility.empty();
         if (maskWanted || (!options.reference.empty() && (peer || technique)))
         {
             if (peer)
@@ -200,6 +241,7 @@ int main(int argc, char** argv)
             if (!options.mask.empty() && !ossref::writeMask(mask, perLightName(options.mask, i)))
                 std::cerr << "cannot write " << perLightName(options.mask, i) << "\n", status = 1;
         }
+        if (writeVisibility(options, scene, refCamera, mask, i) != 0) status = 1;
         if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
         {
             reference = ossref::computeReferenceMask(

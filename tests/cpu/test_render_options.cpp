@@ -61,6 +61,17 @@ TEST(RenderOptions, AGoodLineParses)
     EXPECT_EQ(osshar::propertyValue(p.options, "HybridMethod"), std::nullopt);
 }
 
+// MEASURE.md's soft options: a light's size for the exact visibility, and the two masks.
+TEST(RenderOptions, SoftShadowOptionsParse)
+{
+    const Parsed p = parse({"--light-size", "0.25", "--visibility", "vis%d.png", "--reference-visibility", "ref.png"});
+    ASSERT_TRUE(p.ok) << p.error;
+    EXPECT_EQ(p.options.lightSize, 0.25);
+    EXPECT_EQ(p.options.visibility, "vis%d.png");
+    EXPECT_EQ(p.options.referenceVisibility, "ref.png");
+    EXPECT_EQ(parse({}).options.lightSize, 0.0); // a hard shadow unless asked
+}
+
 // Every property of the technique can be set by --property NAME=VALUE, read by its table row,
 // in order with the shorthands: the last one given wins.
 TEST(RenderOptions, PropertiesComeFromTheTable)
@@ -110,7 +121,10 @@ INSTANTIATE_TEST_SUITE_P(
                               {"--property", "BaseTextureUnit=40"},
                               "--property BaseTextureUnit 40 is out of range (1 to 31"},
                       BadLine{
-                          "NaNRayOffset", {"--shadow-ray-offset", "nan"}, "--shadow-ray-offset nan is not a finite"}),
+                          "NaNRayOffset", {"--shadow-ray-offset", "nan"}, "--shadow-ray-offset nan is not a finite"},
+                      BadLine{"NegativeLightSize", {"--light-size", "-1"}, "--light-size -1 is not a finite number"},
+                      BadLine{"NaNLightSize", {"--light-size", "nan"}, "--light-size nan is not a finite number"},
+                      BadLine{"LightSizeNotANumber", {"--light-size", "big"}, "--light-size big is not a finite"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return std::string(info.param.name); });
 
 TEST(RenderOptions, UsageListsEveryBuiltInScene)
