@@ -62,6 +62,9 @@ struct LightPass
 /** Everything one view (CullVisitor) needs per frame. */
 struct ViewData : public osg::Referenced
 {
+    unsigned int baseUnit = 8;    ///< slot s's depth map is on texture unit baseUnit + s
+    unsigned int pairedSlots = 1; ///< the paired slots' second maps follow on baseUnit + pairedSlots + s
+    unsigned int mapBinding = 0;  ///< how the maps' textures are bound (OVERRIDE or not)
     osg::ref_ptr<osg::StateSet> receiverStateSet;
     osg::ref_ptr<osg::StateSet> receiverPassStateSet; ///< inside receiverStateSet: the stencil modes' lighting program
     osg::ref_ptr<osg::StateSet> prepassStateSet;      ///< inside receiverStateSet: the depth prepass (DepthPrepass)

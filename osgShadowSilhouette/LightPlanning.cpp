@@ -1,10 +1,14 @@
 #include "LightPlanning.h"
 
+#include "SceneVisitors.h"
+
+#include <osgShadowSilhouette/CasterEdges>
 #include <osgShadowSilhouette/ShaderConstants>
 
 #include <osgUtil/RenderStage>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -202,6 +206,31 @@ std::vector<osg::Vec3d> visibleReceiverRegion(osgUtil::CullVisitor& cv, const os
     const double margin = 1e-3 * (zFar - zNear) + 1e-6 * zFar;
     const osg::Matrixd fitted = withDepthRange(projection, std::max(zNear - margin, zNear * 0.5), zFar + margin);
     return visibleRegion(frustumCorners(*cv.getModelViewMatrix(), fitted), receivers);
+}
+
+void gatherFrame(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, MeshCache& meshCache,
+                 double maximumDistance, FrameContext& frame)
+{
+    using Technique = SilhouetteShadowTechnique;
+    const osgShadow::ShadowSettings* settings = scene.getShadowSettings();
+    frame.view = ViewPoint::fromCullVisitor(cv);
+    frame.receivers = boundsOf(scene, settings->getReceivesShadowTraversalMask(), meshCache, frame.view);
+    CasterSignatureVisitor casters(meshCache, frame.view);
+    casters.setTraversalMask(settings->getCastsShadowTraversalMask());
+    for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(casters);
+    casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
+    const osg::BoundingBox& box = casters.getBoundingBox();
+    frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
+    frame.casterSignature = casters.signature;
+    frame.casterParts = std::move(casters.parts);
+    frame.nonFinite = casters.nonFinite;
+    if (!casters.billboards.empty())
+        frame.billboards = std::make_shared<const BillboardMatrices>(std::move(casters.billboards));
+    frame.region = visibleReceiverRegion(cv, frame.receivers, settings->getComputeNearFarModeOverride(),
+                                         frame.mode != Technique::SHADOW_VOLUME ? maximumDistance : DBL_MAX);
+    if (frame.mode != Technique::SHADOW_MAP)
+        frame.casterList = collectCasters(scene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
+                                          meshCache, frame.view);
 }
 
 } // namespace detail

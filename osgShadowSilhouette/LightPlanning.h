@@ -7,6 +7,7 @@
 #include "FrameData.h"
 #include "Warnings.h"
 
+#include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
 
 #include <functional>
@@ -59,6 +60,14 @@ void warnAboutMissingLights(const std::vector<FoundLight>& lights, int lightNum,
 std::vector<osg::Vec3d> visibleReceiverRegion(osgUtil::CullVisitor& cv, const osg::BoundingBoxd& receivers,
                                               osg::CullSettings::ComputeNearFarMode nearFarOverride,
                                               double maximumDistance);
+
+/** What @p frame needs of @p scene in this cull, for frame.mode: the view's LOD and billboard
+ *  choices, the receivers' and casters' bounds, the casters' signature and parts (and those
+ *  with non-finite vertices, left out), the visible receiver region (up to the ShadowSettings'
+ *  MaximumShadowMapDistance @p maximumDistance in the map modes; the volumes reach any
+ *  distance), and but for SHADOW_MAP the triangle casters. */
+void gatherFrame(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, MeshCache& meshCache,
+                 double maximumDistance, FrameContext& frame);
 
 } // namespace detail
 } // namespace osgShadowSilhouette

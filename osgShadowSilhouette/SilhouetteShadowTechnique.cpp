@@ -348,27 +348,7 @@ void SilhouetteShadowTechnique::applyToGLObjects(const GLObjectsOp& op) const
         op(_screenVisibilityFragmentShader.get());
         op(_programLinkCheck.get());
     }
-    for (const auto& entry : _viewDataMap)
-    {
-        ViewData& vd = *entry.second;
-        op(vd.receiverStateSet.get());
-        op(vd.receiverPassStateSet.get());
-        op(vd.prepassStateSet.get());
-        op(vd.stencil.get());
-        op(static_cast<detail::ScreenVisibility*>(vd.screenVisibility.get()));
-        op(vd.exactCounter.get());
-        op(vd.exactBegin.get());
-        op(vd.exactEnd.get());
-        for (LightPass& pass : vd.passes)
-        {
-            op(pass.depthCamera.get());
-            op(pass.depthTexture.get());
-            op(pass.silhouettePass.get());
-            op(pass.blockers.get());
-            op(pass.listPass.get());
-            op(pass.samples.get());
-        }
-    }
+    for (const auto& entry : _viewDataMap) detail::forEachGLObjectHolder(*entry.second, op);
 }
 
 void SilhouetteShadowTechnique::resizeGLObjectBuffers(unsigned int maxSize)
@@ -559,7 +539,7 @@ void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)
         usesDepthPrepass(frame.mode, frame.triangleLists, casterTriangles, std::max(1u, frame.slotsInUse),
                          eyeViewport ? eyeViewport->width() * eyeViewport->height() : 0.0);
     if (mf.stats.depthPrepass)
-        cullDepthPrepass(cv, vd);
+        detail::cullDepthPrepass(cv, vd, [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
     else
         vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::DEPTH);
 }
@@ -574,19 +554,10 @@ void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, c
     // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
     osg::Texture2D* second = mode.defaultSecondMap(mf.settings);
     std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _shared->defaultSilhouetteTexture.get());
-    for (unsigned int slot = 0; slot < vd.passes.size(); ++slot)
-    {
-        // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
-        if (slot < capacity)
-            vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot,
-                                                             _shared->litTexture(mode.rawDepthMaps()), mapBinding());
-        vd.slotOwner->setElement(slot, int(slot));
-        vd.slotCore->setElement(slot, 0.0f);
-        vd.slotInUse[slot] = false;
-        vd.slotSkipped[slot] = false;
-    }
+    osg::Texture2D* fallback = _shared->defaultSilhouetteTexture.get();
+    detail::resetSlots(vd, capacity, _shared->litTexture(mode.rawDepthMaps()));
     // The second maps' units; in SHADOW_MAP they hold the depth maps bound above.
-    if (paired) bindSilhouetteMaps(vd, second ? secondMaps : std::vector<osg::Texture2D*>());
+    if (paired) detail::bindSecondMaps(vd, second ? secondMaps : std::vector<osg::Texture2D*>(), fallback);
     for (std::size_t i = 0; i < lights.size(); ++i)
     {
         if (plan.slots[i] < 0) continue;
@@ -594,7 +565,7 @@ void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, c
         cullLight(mf, mode, lights[i].description, static_cast<unsigned int>(plan.slots[i]), plan.frusta[i],
                   plan.firstFaceSlot[i], secondMaps);
     }
-    if (second) bindSilhouetteMaps(vd, secondMaps);
+    if (second) detail::bindSecondMaps(vd, secondMaps, fallback);
 }
 
 void SilhouetteShadowTechnique::finishEyePass(ModeFrame& mf)
@@ -631,27 +602,8 @@ unsigned int SilhouetteShadowTechnique::listSlots() const
 
 void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
 {
-    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
-    frame.view = ViewPoint::fromCullVisitor(cv);
-    frame.receivers = boundsOf(*_shadowedScene, settings->getReceivesShadowTraversalMask(), *_meshCache, frame.view);
-    CasterSignatureVisitor casters(*_meshCache, frame.view);
-    casters.setTraversalMask(settings->getCastsShadowTraversalMask());
-    for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(casters);
-    casters.mix(cv.getTraversalMask()); // the depth pass culls under the view's mask too
-    const osg::BoundingBox& box = casters.getBoundingBox();
-    frame.casters = box.valid() ? osg::BoundingBoxd(box._min, box._max) : osg::BoundingBoxd();
-    frame.casterSignature = casters.signature;
-    frame.casterParts = std::move(casters.parts);
-    frame.nonFinite = casters.nonFinite;
-    if (!casters.billboards.empty())
-        frame.billboards = std::make_shared<const BillboardMatrices>(std::move(casters.billboards));
+    detail::gatherFrame(cv, *_shadowedScene, *_meshCache, _maximumShadowDistance, frame);
     for (const osg::Drawable* drawable : frame.nonFinite) _warnings->nonFinite(*drawable);
-    // ShadowSettings' MaximumShadowMapDistance bounds the maps' eye range; the volumes reach any distance.
-    frame.region = detail::visibleReceiverRegion(cv, frame.receivers, settings->getComputeNearFarModeOverride(),
-                                                 frame.mode != SHADOW_VOLUME ? _maximumShadowDistance : DBL_MAX);
-    if (frame.mode != SHADOW_MAP)
-        frame.casterList = collectCasters(*_shadowedScene, cv.getTraversalMask() & settings->getCastsShadowTraversalMask(),
-                                          *_meshCache, frame.view);
 }
 
 void SilhouetteShadowTechnique::cullLight(ModeFrame& mf, ModePass& mode, const LightDescription& light,
@@ -684,7 +636,7 @@ void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const Li
     if (!mode.drawsMaps()) return; // volumes only, no map
     vd.slotInUse[slot] = true;
     detail::SlotCull cull{light, slot, pass, detail::cullDepthMap(mf, mode, pass, light), secondMap};
-    vd.receiverStateSet->setTextureAttributeAndModes(_baseTextureUnit + slot, pass.depthTexture.get(), mapBinding());
+    detail::bindDepthMap(vd, slot, pass.depthTexture.get());
     mode.cullSlot(mf, cull);
     // A cube face whose newest build (this light, these casters) drew no caster shadows
     // nothing: the eye pass leaves it out. The counts come back a frame or two late; until
@@ -711,35 +663,9 @@ void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
     _shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
 }
 
-void SilhouetteShadowTechnique::cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd)
-{
-    if (!vd.prepassDepth) vd.prepassDepth = new osg::Depth(osg::Depth::LEQUAL);
-    // Not OVERRIDE: a drawable's own osg::Depth stays, and the prepass leaves it out.
-    vd.receiverPassStateSet->setAttribute(vd.prepassDepth.get());
-    cullReceivers(cv, vd, vd.prepassStateSet.get());
-    if (osgUtil::RenderBin* bin = cv.getCurrentRenderBin())
-        if (osgUtil::RenderStage* stage = bin->getStage())
-            prunePrepass(*stage, vd.prepassStateSet.get(), vd.receiverStateSet.get(), false, DEPTH_PREPASS_BIN);
-}
-
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
 {
-    const osgShadow::ShadowSettings* settings = _shadowedScene->getShadowSettings();
-    const unsigned int mask = cv.getTraversalMask();
-    cv.setTraversalMask(mask & settings->getReceivesShadowTraversalMask());
-    // ComputeNearFarModeOverride: how the view computes its near and far planes over the
-    // receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits.
-    const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
-    const osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
-    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.setComputeNearFarMode(nearFarOverride);
-    cv.pushStateSet(vd.receiverStateSet.get());
-    if (pass) cv.pushStateSet(pass);
-    _shadowedScene->osg::Group::traverse(cv);
-    if (pass) cv.popStateSet();
-    cv.popStateSet();
-    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
-    cv.setComputeNearFarMode(nearFar);
-    cv.setTraversalMask(mask);
+    detail::cullReceivers(cv, *_shadowedScene, vd, pass);
 }
 
 SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgUtil::CullVisitor& cv) const
@@ -755,20 +681,6 @@ SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgU
                                   "osg::DisplaySettings::instance()->setMinimumNumStencilBits(8) before creating "
                                   "it, or run osgviewer with --stencil); rendering SHADOW_MAP");
     return SHADOW_MAP;
-}
-
-void SilhouetteShadowTechnique::bindSilhouetteMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps) const
-{
-    osg::StateSet& ss = *vd.receiverStateSet;
-    for (unsigned int slot = 0; slot < slotCapacity(true); ++slot)
-    {
-        if (maps.empty())
-            ss.removeTextureAttribute(silhouetteUnit(slot), osg::StateAttribute::TEXTURE);
-        else
-            ss.setTextureAttributeAndModes(silhouetteUnit(slot),
-                                           slot < maps.size() ? maps[slot] : _shared->defaultSilhouetteTexture.get(),
-                                           mapBinding());
-    }
 }
 
 } // namespace osgShadowSilhouette

@@ -1,6 +1,11 @@
 #include "ViewState.h"
 
+#include "RenderLeaves.h"
+
 #include <osgShadowSilhouette/ShaderConstants>
+
+#include <osg/Depth>
+#include <osgUtil/RenderStage>
 
 #include <algorithm>
 
@@ -49,6 +54,9 @@ void createListUniforms(ViewData& vd, unsigned int slots)
 osg::ref_ptr<ViewData> createViewData(const ViewLayout& layout)
 {
     osg::ref_ptr<ViewData> vd = new ViewData;
+    vd->baseUnit = layout.baseUnit;
+    vd->pairedSlots = layout.pairedSlots;
+    vd->mapBinding = layout.mapBinding;
     osg::StateSet* ss = new osg::StateSet;
     vd->receiverStateSet = ss;
     vd->receiverPassStateSet = new osg::StateSet;
@@ -140,6 +148,68 @@ void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::Bounding
     {
         vd.listRayFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
         vd.lookupBiasFrame->set(osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    }
+}
+
+void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass)
+{
+    const osgShadow::ShadowSettings* settings = scene.getShadowSettings();
+    const unsigned int mask = cv.getTraversalMask();
+    cv.setTraversalMask(mask & settings->getReceivesShadowTraversalMask());
+    const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
+    const osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
+    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.setComputeNearFarMode(nearFarOverride);
+    cv.pushStateSet(vd.receiverStateSet.get());
+    if (pass) cv.pushStateSet(pass);
+    scene.osg::Group::traverse(cv);
+    if (pass) cv.popStateSet();
+    cv.popStateSet();
+    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
+    cv.setComputeNearFarMode(nearFar);
+    cv.setTraversalMask(mask);
+}
+
+void cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd,
+                      const std::function<void(osg::StateSet* pass)>& cullReceivers)
+{
+    if (!vd.prepassDepth) vd.prepassDepth = new osg::Depth(osg::Depth::LEQUAL);
+    // Not OVERRIDE: a drawable's own osg::Depth stays, and the prepass leaves it out.
+    vd.receiverPassStateSet->setAttribute(vd.prepassDepth.get());
+    cullReceivers(vd.prepassStateSet.get());
+    if (osgUtil::RenderBin* bin = cv.getCurrentRenderBin())
+        if (osgUtil::RenderStage* stage = bin->getStage())
+            prunePrepass(*stage, vd.prepassStateSet.get(), vd.receiverStateSet.get(), false,
+                         SilhouetteShadowTechnique::DEPTH_PREPASS_BIN);
+}
+
+void resetSlots(ViewData& vd, unsigned int capacity, osg::Texture2D* litTexture)
+{
+    for (unsigned int slot = 0; slot < vd.passes.size(); ++slot)
+    {
+        // SHADOW_MAP's slots after the paired ones take the units of their silhouette maps.
+        if (slot < capacity) bindDepthMap(vd, slot, litTexture);
+        vd.slotOwner->setElement(slot, int(slot));
+        vd.slotCore->setElement(slot, 0.0f);
+        vd.slotInUse[slot] = false;
+        vd.slotSkipped[slot] = false;
+    }
+}
+
+void bindDepthMap(ViewData& vd, unsigned int slot, osg::Texture2D* texture)
+{
+    vd.receiverStateSet->setTextureAttributeAndModes(vd.baseUnit + slot, texture, vd.mapBinding);
+}
+
+void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg::Texture2D* fallback)
+{
+    osg::StateSet& ss = *vd.receiverStateSet;
+    for (unsigned int slot = 0; slot < vd.pairedSlots; ++slot)
+    {
+        const unsigned int unit = vd.baseUnit + vd.pairedSlots + slot;
+        if (maps.empty())
+            ss.removeTextureAttribute(unit, osg::StateAttribute::TEXTURE);
+        else
+            ss.setTextureAttributeAndModes(unit, slot < maps.size() ? maps[slot] : fallback, vd.mapBinding);
     }
 }
 

@@ -5,8 +5,12 @@
 
 #include "EyePass.h"
 #include "FrameData.h"
+#include "ScreenVisibility.h"
 
+#include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
+
+#include <functional>
 
 namespace osgShadowSilhouette {
 namespace detail {
@@ -36,6 +40,52 @@ void updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd, const std::vecto
 /** The exact test's ray offset and the lookups' depth bias scale with the shadowed scene's
  *  @p bound, in eye space. */
 void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::BoundingSphere& bound, float shadowRayOffset);
+
+/** Every slot of the view with nothing to shadow this frame: owned by itself, no cube face,
+ *  not in use; the slots below @p capacity read @p litTexture as their depth map. */
+void resetSlots(ViewData& vd, unsigned int capacity, osg::Texture2D* litTexture);
+
+/** Binds @p texture as slot @p slot's depth map in the eye pass. */
+void bindDepthMap(ViewData& vd, unsigned int slot, osg::Texture2D* texture);
+
+/** Binds each paired slot's second map (silhouette map or edge mask): maps[slot], or
+ *  @p fallback past their end; unbinds them all when @p maps is empty. */
+void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg::Texture2D* fallback);
+
+/** Culls @p scene's children for the eye under the receivers' traversal mask, inside the
+ *  view's receiver state and @p pass (may be null); the ShadowSettings'
+ *  ComputeNearFarModeOverride decides how the view computes its near and far planes over the
+ *  receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits. */
+void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass);
+
+/** Culls the depth prepass of the receivers (DepthPrepass) through @p cullReceivers under the
+ *  view's prepass state, and keeps of it only what it draws exactly as the eye pass does. */
+void cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd,
+                      const std::function<void(osg::StateSet* pass)>& cullReceivers);
+
+/** Calls @p op on every object of the view that holds GL objects: its state sets, stencil
+ *  passes, screen-space visibility, counters, and each slot's camera, maps and queries. */
+template <class Op>
+void forEachGLObjectHolder(ViewData& vd, const Op& op)
+{
+    op(vd.receiverStateSet.get());
+    op(vd.receiverPassStateSet.get());
+    op(vd.prepassStateSet.get());
+    op(vd.stencil.get());
+    op(static_cast<ScreenVisibility*>(vd.screenVisibility.get()));
+    op(vd.exactCounter.get());
+    op(vd.exactBegin.get());
+    op(vd.exactEnd.get());
+    for (LightPass& pass : vd.passes)
+    {
+        op(pass.depthCamera.get());
+        op(pass.depthTexture.get());
+        op(pass.silhouettePass.get());
+        op(pass.blockers.get());
+        op(pass.listPass.get());
+        op(pass.samples.get());
+    }
+}
 
 } // namespace detail
 } // namespace osgShadowSilhouette
