@@ -21,12 +21,7 @@ MODES=${MODES:-"shadowmap:2048 shadowmap:512 silhouette:1024 hybrid:512 volume:0
 # Five point lights above the scene, around the elephant.
 POSITIONS=("4 -3 8" "-5 -2 9" "3 5 8" "-4 4 10" "6 1 9")
 
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} >/dev/null
-cmake --build "$BUILD_DIR" -j "${JOBS:-2}" --target osgsilhouetteshadow >/dev/null
-export OSG_LIBRARY_PATH="$PWD/$BUILD_DIR/lib"
-export OSG_NOTIFY_LEVEL=${OSG_NOTIFY_LEVEL:-WARN}
-mkdir -p "$OUT"
-TMP=$(mktemp -d)
+bench_setup osgsilhouetteshadow
 CSV="$OUT/lights.csv"
 echo "scene,technique,map_size,lights,width,height,frames,frame_ms_median,gpu_ms_median,wrong_pct_max,wrong_pct_per_light,rounds,frame_ms_rounds,frame_ms_min" > "$CSV"
 LOAD_BEFORE=$(uptime | sed 's/.*load average: //')

@@ -16,12 +16,7 @@ cd "$(dirname "$0")/.."
 source scripts/bench-rounds.sh
 SCENES=${SCENES:-default,cubes,bunny}
 
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} >/dev/null
-cmake --build "$BUILD_DIR" -j "${JOBS:-2}" --target osgsilhouette-bench >/dev/null
-export OSG_LIBRARY_PATH="$PWD/$BUILD_DIR/lib"
-export OSG_NOTIFY_LEVEL=${OSG_NOTIFY_LEVEL:-WARN}
-mkdir -p "$OUT"
-TMP=$(mktemp -d)
+bench_setup osgsilhouette-bench
 LOAD_BEFORE=$(uptime | sed 's/.*load average: //')
 START=$(date +%s)
 for ((round = 1; round <= ROUNDS; ++round)); do
