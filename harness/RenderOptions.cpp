@@ -173,10 +173,11 @@ bool readProperties(osg::ArgumentParser& a, RenderOptions& o, std::string& error
 const std::vector<std::pair<std::string, std::string>>& propertyOptions()
 {
     static const std::vector<std::pair<std::string, std::string>> options = {
-        {"--max-shadow-lights", "MaxShadowLights"},  {"--blocker-culling", "BlockerCulling"},
-        {"--hybrid-method", "HybridMethod"},         {"--hybrid-edges", "HybridEdgeMask"},
-        {"--depth-prepass", "DepthPrepass"},         {"--shadow-ray-offset", "ShadowRayOffset"},
-        {"--per-pixel-lighting", "PerPixelLighting"}};
+        {"--max-shadow-lights", "MaxShadowLights"},   {"--blocker-culling", "BlockerCulling"},
+        {"--hybrid-method", "HybridMethod"},          {"--hybrid-edges", "HybridEdgeMask"},
+        {"--depth-prepass", "DepthPrepass"},          {"--shadow-ray-offset", "ShadowRayOffset"},
+        {"--per-pixel-lighting", "PerPixelLighting"}, {"--filter", "Filter"},
+        {"--filter-window", "FilterWindow"}};
     return options;
 }
 
@@ -241,6 +242,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
             error = "--light-size " + lightSize + " is not a finite number of at least 0 (0: a hard shadow)";
             return false;
         }
+        o.properties.emplace_back("LightSize", o.lightSize); // the technique's lights are as large
     }
     a.read("--visibility", o.visibility);
     a.read("--reference-visibility", o.referenceVisibility);

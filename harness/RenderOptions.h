@@ -48,9 +48,10 @@ struct RenderOptions
     std::string diff;                 ///< --diff diff.png: red/green diff against the reference
     double referenceOffset = -1.0; ///< --reference-offset S: the reference's offset scale (negative: ossref's default)
     bool skipEmptyFaces = true;       ///< --skip-empty-faces on|off (SilhouetteShadowTechnique::Tuning)
-    /** --light-size S: every light's size in the exact visibility reference (MEASURE.md, "Soft
-     *  shadows"): the radius of point and spot lights in scene units, the angular radius of
-     *  directional lights in degrees; 0: a point or a single direction. */
+    /** --light-size S: every light's size (MEASURE.md, "Soft shadows"), for the technique's
+     *  soft filters (its LightSize, also in properties) and the exact visibility reference:
+     *  the radius of point and spot lights in scene units, the angular radius of directional
+     *  lights in degrees; 0: a point or a single direction. */
     double lightSize = 0.0;
     std::string visibility;          ///< --visibility vis.png: the frame's visibility mask (16-bit)
     std::string referenceVisibility; ///< --reference-visibility ref.png: the exact visibility mask

@@ -2,6 +2,8 @@
 
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include <algorithm>
+
 namespace osgShadowSilhouette {
 namespace detail {
 
@@ -21,7 +23,13 @@ std::map<std::string, std::string> eyePassDefines(const EyePassPlan& plan)
     if (plan.skippedSlots != 0) d[shader::DEFINE_SKIPPED_SLOTS] = std::to_string(plan.skippedSlots);
     flag(shader::DEFINE_CUBE_FACES, plan.cubeFaces);
     flag(shader::DEFINE_PER_PIXEL_LIGHTING, plan.perPixelLighting);
-    flag(shader::DEFINE_DEBUG_MASK, plan.debugView == Technique::DEBUG_SHADOW_MASK);
+    const bool visibility = plan.debugView == Technique::DEBUG_VISIBILITY;
+    flag(shader::DEFINE_DEBUG_MASK, plan.debugView == Technique::DEBUG_SHADOW_MASK || visibility);
+    flag(shader::DEFINE_DEBUG_VISIBILITY, visibility);
+    const bool shadowMap = plan.mode == Technique::SHADOW_MAP;
+    if (shadowMap && plan.filter == Technique::FILTER_PCF)
+        d[shader::DEFINE_FILTER_PCF] = std::to_string(std::max(1u, plan.filterWindow));
+    flag(shader::DEFINE_FILTER_PCSS, shadowMap && plan.filter == Technique::FILTER_PCSS);
     flag(shader::DEFINE_DEBUG_CLASSES, plan.debugView == Technique::DEBUG_CLASSES);
     flag(shader::DEFINE_SILHOUETTE_MAP, silhouette);
     flag(shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, silhouette && plan.debugView == Technique::DEBUG_SILHOUETTE_PIXELS);
@@ -38,12 +46,16 @@ std::map<std::string, std::string> eyePassDefines(const EyePassPlan& plan)
 const std::vector<std::string>& eyePassDefineNames()
 {
     static const std::vector<std::string> names = {
-        shader::DEFINE_MAX_SHADOW_SLOTS,     shader::DEFINE_NUM_SHADOW_SLOTS,      shader::DEFINE_MAX_LIST_SLOTS,
-        shader::DEFINE_SKIPPED_SLOTS,        shader::DEFINE_CUBE_FACES,            shader::DEFINE_PER_PIXEL_LIGHTING,
-        shader::DEFINE_DEBUG_MASK,           shader::DEFINE_DEBUG_CLASSES,         shader::DEFINE_SILHOUETTE_MAP,
-        shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, shader::DEFINE_DEBUG_SILHOUETTE_MAP, shader::DEFINE_TRIANGLE_LISTS,
-        shader::DEFINE_LIST_IMAGES,          shader::DEFINE_LIST_BLOCK_HEADS,      shader::DEFINE_COUNT_EXACT,
-        shader::DEFINE_BIAS_BAND,            shader::DEFINE_HYBRID_EDGES,
+        shader::DEFINE_MAX_SHADOW_SLOTS,     shader::DEFINE_NUM_SHADOW_SLOTS,
+        shader::DEFINE_MAX_LIST_SLOTS,       shader::DEFINE_SKIPPED_SLOTS,
+        shader::DEFINE_CUBE_FACES,           shader::DEFINE_PER_PIXEL_LIGHTING,
+        shader::DEFINE_DEBUG_MASK,           shader::DEFINE_DEBUG_CLASSES,
+        shader::DEFINE_SILHOUETTE_MAP,       shader::DEFINE_DEBUG_SILHOUETTE_PIXELS,
+        shader::DEFINE_DEBUG_SILHOUETTE_MAP, shader::DEFINE_TRIANGLE_LISTS,
+        shader::DEFINE_LIST_IMAGES,          shader::DEFINE_LIST_BLOCK_HEADS,
+        shader::DEFINE_COUNT_EXACT,          shader::DEFINE_BIAS_BAND,
+        shader::DEFINE_HYBRID_EDGES,         shader::DEFINE_DEBUG_VISIBILITY,
+        shader::DEFINE_FILTER_PCF,           shader::DEFINE_FILTER_PCSS,
     };
     return names;
 }

@@ -63,7 +63,7 @@ std::vector<LightFrustum> planLightFrusta(const FrameContext& frame, const Light
         if (parts.empty() && !frame.casterParts.empty())
             return {LightFrustum()}; // nothing to shadow: the light is lit unshadowed
         frusta = fitCubeFaces(light, frame.region, frame.casters, budget.mapSize,
-                              frame.casterParts.empty() ? nullptr : &parts);
+                              frame.casterParts.empty() ? nullptr : &parts, budget.faceMarginTexels);
         const unsigned int slotLimit = budget.slotLimit;
         if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > slotLimit)
         {

@@ -334,13 +334,13 @@ bool canShadow(const LightDescription& light, const CasterPart& part, const osg:
 
 std::vector<LightFrustum> fitCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region,
                                        const osg::BoundingBoxd& casters, unsigned int mapSize,
-                                       const std::vector<osg::BoundingBoxd>* parts)
+                                       const std::vector<osg::BoundingBoxd>* parts, double marginTexels)
 {
     std::vector<LightFrustum> faces;
     if (region.empty() || !casters.valid() || !finite(light.position)) return faces;
     static const osg::Vec3d axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const osg::Vec3d ups[6] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}};
-    const double fov = cubeFaceFov(mapSize);
+    const double fov = cubeFaceFov(mapSize, marginTexels);
     const double tanHalf = std::tan(osg::DegreesToRadians(0.5 * fov));
     const std::array<osg::Vec3d, 8> casterCorners = boxCorners(casters);
     // Every caster point inside a face's pyramid is at least this deep along its axis: the

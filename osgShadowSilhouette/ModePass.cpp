@@ -12,7 +12,7 @@ osg::ref_ptr<ModePass> createModePass(SilhouetteShadowTechnique::Mode mode)
     case SilhouetteShadowTechnique::HYBRID: return createHybridModePass();
     case SilhouetteShadowTechnique::SHADOW_MAP: break;
     }
-    return new ModePass; // SHADOW_MAP: the depth maps alone
+    return createShadowMapModePass();
 }
 
 } // namespace detail

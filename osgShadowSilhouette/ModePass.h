@@ -43,6 +43,8 @@ struct PassSettings
     SilhouetteShadowTechnique::HybridMethod hybridMethod = SilhouetteShadowTechnique::HYBRID_AUTO;
     SilhouetteShadowTechnique::DebugView debugView = SilhouetteShadowTechnique::DEBUG_NONE;
     unsigned int debugLight = 0;
+    SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2; ///< SHADOW_MAP's
+    unsigned int filterWindow = 1;                                                        ///< FILTER_PCF's N
     SilhouetteShadowTechnique::Tuning tuning;
     unsigned int listSlots = 1;  ///< slots that can have triangle lists
     bool recordingStats = false; ///< setStats() has a live target
@@ -99,9 +101,9 @@ class ModePass : public osg::Referenced
 public:
     /** Whether each slot has a depth map (every mode but SHADOW_VOLUME). */
     virtual bool drawsMaps() const { return true; }
-    /** Whether the maps hold raw depths, compared by the eye pass (SILHOUETTE_MAP), not
-     *  through hardware comparison. */
-    virtual bool rawDepthMaps() const { return false; }
+    /** Whether the maps hold raw depths, compared by the eye pass (SILHOUETTE_MAP, SHADOW_MAP
+     *  under a soft filter), not through hardware comparison. */
+    virtual bool rawDepthMaps(const PassSettings&) const { return false; }
     /** The texture the slots' second units hold where a slot has no map of its own
      *  (SILHOUETTE_MAP's neighbourhood maps, HYBRID's edge masks); null: the mode binds none. */
     virtual osg::Texture2D* defaultSecondMap(const PassSettings&) const { return nullptr; }
@@ -120,9 +122,10 @@ public:
     virtual void cullEyePasses(ModeFrame&, const std::vector<FoundLight>&, const std::vector<int>& /*slots*/) {}
 };
 
-/** The passes of @p mode: SHADOW_MAP's are the technique's depth maps alone (ModePass
- *  itself); the others' are in a file each (SilhouetteMode.cpp, VolumeMode.cpp, HybridMode.cpp). */
+/** The passes of @p mode, in a file each (ShadowMapMode.cpp: the technique's depth maps
+ *  alone, SilhouetteMode.cpp, VolumeMode.cpp, HybridMode.cpp). */
 osg::ref_ptr<ModePass> createModePass(SilhouetteShadowTechnique::Mode mode);
+osg::ref_ptr<ModePass> createShadowMapModePass();
 osg::ref_ptr<ModePass> createSilhouetteModePass();
 osg::ref_ptr<ModePass> createVolumeModePass();
 osg::ref_ptr<ModePass> createHybridModePass();

@@ -118,16 +118,18 @@ std::vector<PropertyInfo> lightRows()
         {OSS_PROPERTY(UseDefaultShading), P::BOOL, 1, 0, 0, 1, "", {},
          "whether the technique installs its receiver shading program",
          ""},
-        {OSS_PROPERTY(DebugView), P::ENUM, T::DEBUG_NONE, T::DEBUG_SHADOW_MASK, 0, 4, "",
+        {OSS_PROPERTY(DebugView), P::ENUM, T::DEBUG_NONE, T::DEBUG_SHADOW_MASK, 0, 5, "",
          {{"DEBUG_NONE", T::DEBUG_NONE, "none"},
           {"DEBUG_SHADOW_MASK", T::DEBUG_SHADOW_MASK, "mask"},
           {"DEBUG_SILHOUETTE_PIXELS", T::DEBUG_SILHOUETTE_PIXELS, "pixels"},
           {"DEBUG_SILHOUETTE_MAP", T::DEBUG_SILHOUETTE_MAP, "silmap"},
-          {"DEBUG_CLASSES", T::DEBUG_CLASSES, "classes"}},
+          {"DEBUG_CLASSES", T::DEBUG_CLASSES, "classes"},
+          {"DEBUG_VISIBILITY", T::DEBUG_VISIBILITY, "visibility"}},
          "what the eye pass shows of light DebugLight instead of the shaded scene",
          "`DEBUG_SHADOW_MASK`: the MEASURE.md mask; `DEBUG_SILHOUETTE_PIXELS`, `DEBUG_SILHOUETTE_MAP`: "
          "SILHOUETTE_MAP's silhouette pixels (green) and its silhouette map; `DEBUG_CLASSES`: every "
-         "mode's pixel classes in Chan and Durand's colours (below)"},
+         "mode's pixel classes in Chan and Durand's colours (below); `DEBUG_VISIBILITY`: the light's "
+         "visibility as a grey level, the mask before its threshold (fractions under a soft `Filter`)"},
         {OSS_PROPERTY(DebugLight), P::UINT, 0, 2, 0, LAST_LIGHT, "an index among the lights found", {},
          "the light the debug views show",
          "past the view's lights: a warning"},
@@ -181,6 +183,29 @@ std::vector<PropertyInfo> hybridRows()
          "ground of four vertices, none inside the cone) does not show while its shadow does; per pixel it "
          "shows, as users of spot lights expect "
          "([docs/lights.md](docs/lights.md#lighting-per-pixel-or-per-vertex-property-perpixellighting))"},
+    };
+}
+
+std::vector<PropertyInfo> filterRows()
+{
+    return {
+        {OSS_PROPERTY(Filter), P::ENUM, T::FILTER_PCF_2X2, T::FILTER_PCSS, 0, 2, "",
+         {{"FILTER_PCF_2X2", T::FILTER_PCF_2X2, "pcf2x2"},
+          {"FILTER_PCF", T::FILTER_PCF, "pcf"},
+          {"FILTER_PCSS", T::FILTER_PCSS, "pcss"}},
+         "how SHADOW_MAP filters its depth maps: 2x2 PCF, an N x N PCF window, or PCSS soft shadows",
+         "`FILTER_PCF`: Doverspike's `FilterWindow` x `FilterWindow` window of bilinear PCF taps; "
+         "`FILTER_PCSS`: a blocker search, a penumbra as wide as `LightSize` and the blockers' depth say, "
+         "and a disc of PCF taps that wide; the other modes keep their hard answer and warn once "
+         "([docs/soft-shadows.md](docs/soft-shadows.md))"},
+        {OSS_PROPERTY(FilterWindow), P::UINT, 3, 5, 1, shader::FILTER_WINDOW_MAX, "", {},
+         "`FILTER_PCF`: the N of its N x N window of taps, one texel apart",
+         "1 is the 2x2 baseline"},
+        {OSS_PROPERTY(LightSize), P::FLOAT, 0, 1.5, 0, 1e6,
+         "scene units (point, spot) or degrees (directional)", {},
+         "every light's size for the soft filters: a sphere's radius, or a directional light's angular radius",
+         "0: hard shadows; a light's own size, the float user value `ShadowLightSize` on its `osg::Light` "
+         "or `osg::LightSource`, wins (a directional light's below 45 degrees; others warn and cast hard)"},
     };
 }
 
@@ -255,7 +280,7 @@ const std::vector<PropertyInfo>& properties()
 {
     static const std::vector<PropertyInfo> table = [] {
         std::vector<PropertyInfo> rows;
-        for (auto part : {algorithmRows, lightRows, hybridRows})
+        for (auto part : {algorithmRows, lightRows, hybridRows, filterRows})
             for (PropertyInfo& row : part()) rows.push_back(std::move(row));
         return rows;
     }();

@@ -30,9 +30,15 @@ std::string shaderPrelude()
     };
     for (const auto& d : defaults)
         s << "#ifndef " << d.first << "\n#define " << d.first << " " << d.second << "\n#endif\n";
-    // The shadow maps' sampler: raw depths in SILHOUETTE_MAP, which makes its own comparisons
-    // (defined where a shader imports OSS_SILHOUETTE_MAP).
-    s << "#ifdef OSS_SILHOUETTE_MAP\n#define OSS_SHADOW_SAMPLER sampler2D\n#else\n"
+    // The soft filters' constants (oss_filter.frag.glsl).
+    s << "#define OSS_PCSS_MAX_RADIUS_TEXELS " << shader::PCSS_MAX_RADIUS_TEXELS << "\n"
+      << "#define OSS_PCSS_SEARCH_TAPS " << shader::PCSS_SEARCH_TAPS << "\n"
+      << "#define OSS_PCSS_FILTER_TAPS " << shader::PCSS_FILTER_TAPS << "\n";
+    // The shadow maps' sampler: raw depths in SILHOUETTE_MAP and under SHADOW_MAP's soft
+    // filters, which make their own comparisons (defined where a shader imports
+    // OSS_SILHOUETTE_MAP, OSS_FILTER_PCF and OSS_FILTER_PCSS).
+    s << "#if defined(OSS_SILHOUETTE_MAP) || defined(OSS_FILTER_PCF) || defined(OSS_FILTER_PCSS)\n"
+         "#define OSS_SHADOW_SAMPLER sampler2D\n#else\n"
          "#define OSS_SHADOW_SAMPLER sampler2DShadow\n#endif\n";
     return s.str();
 }

@@ -22,6 +22,7 @@ void SilhouetteShadowTechnique::createShadowShaders() const
     _silhouetteFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FRAG);
     _listTermFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
     _screenVisibilityFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SCREEN_VISIBILITY_FRAG);
+    _filterFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_FILTER_FRAG);
 }
 
 std::vector<osg::ref_ptr<osg::Shader>> SilhouetteShadowTechnique::getShadowShaders() const
@@ -29,7 +30,7 @@ std::vector<osg::ref_ptr<osg::Shader>> SilhouetteShadowTechnique::getShadowShade
     createShadowShaders();
     std::vector<osg::ref_ptr<osg::Shader>> shaders;
     for (osg::Shader* s : {_shadowFragmentShader.get(), _silhouetteFragmentShader.get(), _listTermFragmentShader.get(),
-                           _screenVisibilityFragmentShader.get()})
+                           _screenVisibilityFragmentShader.get(), _filterFragmentShader.get()})
         if (s) shaders.push_back(s); // a shader that cannot be found has been warned about
     return shaders;
 }

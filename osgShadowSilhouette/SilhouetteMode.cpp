@@ -29,7 +29,7 @@ namespace {
 class SilhouetteModePass : public ModePass
 {
 public:
-    bool rawDepthMaps() const override { return true; }
+    bool rawDepthMaps(const PassSettings&) const override { return true; }
 
     osg::Texture2D* defaultSecondMap(const PassSettings& settings) const override
     {

@@ -14,6 +14,7 @@
 #include "ScreenVisibility.h"
 #include "SharedResources.h"
 #include "SceneVisitors.h"
+#include "SoftFilter.h"
 
 #include <osg/Depth>
 #include <osg/GLExtensions>
@@ -101,7 +102,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _baseTextureUnit(copy._baseTextureUnit), _useDefaultShading(copy._useDefaultShading),
       _perPixelLighting(copy._perPixelLighting), _debugView(copy._debugView), _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _hybridEdgeMask(copy._hybridEdgeMask),
-      _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _tuning(copy._tuning),
+      _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _filter(copy._filter),
+      _filterWindow(copy._filterWindow), _lightSize(copy._lightSize), _tuning(copy._tuning),
       _warnings(new detail::WarningLog)
 {
 }
@@ -242,6 +244,21 @@ void SilhouetteShadowTechnique::setShadowRayOffset(float offset)
     if (acceptValue("ShadowRayOffset", offset, _shadowRayOffset)) _shadowRayOffset = offset;
 }
 
+void SilhouetteShadowTechnique::setFilter(Filter filter)
+{
+    _filter = acceptEnum("Filter", filter);
+}
+
+void SilhouetteShadowTechnique::setFilterWindow(unsigned int n)
+{
+    if (acceptValue("FilterWindow", n, _filterWindow)) _filterWindow = n;
+}
+
+void SilhouetteShadowTechnique::setLightSize(float size)
+{
+    if (acceptValue("LightSize", size, _lightSize)) _lightSize = size;
+}
+
 bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, std::size_t triangles,
                                                  unsigned int slots, double viewportPixels) const
 {
@@ -295,6 +312,7 @@ void SilhouetteShadowTechnique::init()
     TagShaderDefinesVisitor tagger;
     for (unsigned int i = 0; i < _shadowedScene->getNumChildren(); ++i) _shadowedScene->getChild(i)->accept(tagger);
     _warnings->setAlphaTested({tagger.alphaTested.begin(), tagger.alphaTested.end()});
+    _sizedLightSources = detail::findSizedLightSources(*_shadowedScene);
 
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_viewDataMutex);
@@ -433,6 +451,10 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     services.warnAlphaTested = [log = _warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
     ModeFrame mf{cv, vd, frame, stats, eye, settings, services};
     ModePass& mode = modePassFor(frame.mode);
+    if (frame.mode != SHADOW_MAP && _filter != FILTER_PCF_2X2)
+        warnOnce(detail::WARN_FILTER_MODE, "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) +
+                                               " applies to SHADOW_MAP only; mode " + modeName(frame.mode) +
+                                               " renders its own hard shadows");
     mode.planFrame(mf);
     prepareEyePass(mf);
     cullShadowSlots(mf, mode, lights, plan);
@@ -461,6 +483,13 @@ std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisit
         else
             vd.receiverStateSet->removeMode(GL_LIGHT0 + num);
     }
+    for (FoundLight& found : lights)
+    {
+        std::string refusal;
+        found.description.size =
+            detail::lightSize(*found.light, _sizedLightSources.get(), found.description.type, _lightSize, refusal);
+        if (!refusal.empty()) _warnings->refusedLightSize(*found.light, refusal);
+    }
     stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
     stats.lightsFound = static_cast<unsigned int>(lights.size());
     return lights;
@@ -475,6 +504,7 @@ SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::ve
     budget.mapSize = _shadowMapSize;
     budget.slotLimit = slotCapacity(pairedSlots(frame.mode));
     budget.cubeFaces = frame.mode != SHADOW_VOLUME; // the volumes reach every direction
+    if (frame.mode == SHADOW_MAP) budget.faceMarginTexels = detail::filterReachTexels(_filter, _filterWindow);
     SlotPlan plan = detail::planSlots(frame, lights, budget, warner(), stats.lightsSkipped);
     frame.slotsInUse = plan.slotsInUse;
     return plan;
@@ -498,6 +528,8 @@ detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) cons
     s.hybridMethod = _hybridMethod;
     s.debugView = _debugView;
     s.debugLight = _debugLight;
+    s.filter = _filter;
+    s.filterWindow = _filterWindow;
     s.tuning = _tuning;
     s.listSlots = listSlots();
     s.recordingStats = _stats.valid();
@@ -555,7 +587,7 @@ void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, c
     osg::Texture2D* second = mode.defaultSecondMap(mf.settings);
     std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _shared->defaultSilhouetteTexture.get());
     osg::Texture2D* fallback = _shared->defaultSilhouetteTexture.get();
-    detail::resetSlots(vd, capacity, _shared->litTexture(mode.rawDepthMaps()));
+    detail::resetSlots(vd, capacity, _shared->litTexture(mode.rawDepthMaps(mf.settings)));
     // The second maps' units; in SHADOW_MAP they hold the depth maps bound above.
     if (paired) detail::bindSecondMaps(vd, second ? secondMaps : std::vector<osg::Texture2D*>(), fallback);
     for (std::size_t i = 0; i < lights.size(); ++i)
@@ -574,7 +606,7 @@ void SilhouetteShadowTechnique::finishEyePass(ModeFrame& mf)
     detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(mf.eye));
     // A mask is 0 or 1: a blended scene (an alpha-tested tree that also blends) must not
     // mix it with what lies behind. The alpha still reaches the scene's osg::AlphaFunc.
-    if (_debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES)
+    if (_debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES || _debugView == DEBUG_VISIBILITY)
         vd.receiverStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     else
         vd.receiverStateSet->removeMode(GL_BLEND);
@@ -631,7 +663,8 @@ void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const Li
 {
     ViewData& vd = mf.vd;
     LightPass& pass = vd.passes[slot];
-    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(), *_shared->depthPassStateSet, _shadowedScene);
+    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(mf.settings), *_shared->depthPassStateSet,
+                        _shadowedScene);
     pass.frustum = frustum;
     if (!mode.drawsMaps()) return; // volumes only, no map
     vd.slotInUse[slot] = true;

@@ -15,7 +15,7 @@ namespace detail {
 namespace {
 
 /** The lights' uniforms: their count, GL numbers and shadow slots, and per slot its
- *  eye-to-shadow matrix, owner light and cube-face core. */
+ *  eye-to-shadow matrix, owner light, cube-face core and PCSS's penumbra scale. */
 void createLightUniforms(ViewData& vd, unsigned int slots)
 {
     vd.numLights = new osg::Uniform(shader::NUM_LIGHTS, 0);
@@ -24,6 +24,7 @@ void createLightUniforms(ViewData& vd, unsigned int slots)
     vd.eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, slots);
     vd.slotOwner = new osg::Uniform(osg::Uniform::INT, shader::SLOT_OWNER, slots);
     vd.slotCore = new osg::Uniform(osg::Uniform::FLOAT, shader::SLOT_CORE, slots);
+    vd.filterScale = new osg::Uniform(osg::Uniform::FLOAT_VEC2, shader::FILTER_SCALE, slots);
     vd.maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
     {
@@ -84,8 +85,8 @@ osg::ref_ptr<ViewData> createViewData(const ViewLayout& layout)
     createListUniforms(*vd, slots);
     for (osg::Uniform* u :
          {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(), vd->maskLight.get(),
-          samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->listCapacity.get(),
-          vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get()})
+          samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->filterScale.get(),
+          vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
@@ -190,6 +191,7 @@ void resetSlots(ViewData& vd, unsigned int capacity, osg::Texture2D* litTexture)
         if (slot < capacity) bindDepthMap(vd, slot, litTexture);
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
+        vd.filterScale->setElement(slot, osg::Vec2f());
         vd.slotInUse[slot] = false;
         vd.slotSkipped[slot] = false;
     }

@@ -17,7 +17,8 @@ namespace {
 bool oneLightDebugView(const PassSettings& settings)
 {
     return settings.debugView == SilhouetteShadowTechnique::DEBUG_SHADOW_MASK ||
-           settings.debugView == SilhouetteShadowTechnique::DEBUG_CLASSES;
+           settings.debugView == SilhouetteShadowTechnique::DEBUG_CLASSES ||
+           settings.debugView == SilhouetteShadowTechnique::DEBUG_VISIBILITY;
 }
 
 /** The slots a light's cube faces take (bit s: slot s), its own among them. */

@@ -72,6 +72,14 @@ void WarningLog::refusedLight(osg::Node* root, const osg::Light& light, const st
              << refusal << "; it lights nothing and casts no shadow" << std::endl;
 }
 
+void WarningLog::refusedLightSize(const osg::Light& light, const std::string& refusal)
+{
+    Lock lock(_mutex);
+    if (!_sizedLights.insert(&light).second) return;
+    OSG_WARN << "osgShadowSilhouette: light " << light.getLightNum() << ": " << refusal << "; it casts a hard shadow"
+             << std::endl;
+}
+
 void WarningLog::setAlphaTested(std::vector<osg::observer_ptr<osg::Drawable>> drawables)
 {
     Lock lock(_mutex);

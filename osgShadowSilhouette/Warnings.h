@@ -35,6 +35,7 @@ enum WarningKey
     WARN_DEBUG_LIGHT,
     WARN_SCREEN_VISIBILITY,
     WARN_BLENDED_VISIBILITY,
+    WARN_FILTER_MODE,
 };
 
 /** Raises warning @p key with @p message (the technique's warnOnce()). */
@@ -55,6 +56,10 @@ public:
      *  LightSource, found below @p root (may be null). */
     void refusedLight(osg::Node* root, const osg::Light& light, const std::string& refusal);
 
+    /** Once per light: its size (@p refusal says which and why) cannot be used, so it
+     *  casts a hard shadow. */
+    void refusedLightSize(const osg::Light& light, const std::string& refusal);
+
     /** The drawables under GL_ALPHA_TEST (found by the technique's init()). */
     void setAlphaTested(std::vector<osg::observer_ptr<osg::Drawable>> drawables);
     /** One message per mode (SHADOW_VOLUME; HYBRID with stencil volumes or with @p lists)
@@ -66,7 +71,7 @@ private:
     OpenThreads::Mutex _mutex;
     std::set<int> _keys;
     std::set<const osg::Drawable*> _nonFinite;
-    std::set<const osg::Light*> _lights;
+    std::set<const osg::Light*> _lights, _sizedLights;
     std::vector<osg::observer_ptr<osg::Drawable>> _alphaTested;
     std::set<std::pair<int, const osg::Drawable*>>
         _alphaTestedNamed; ///< (0 volumes, 1 HYBRID stencil, 2 lists; drawable)

@@ -7,7 +7,7 @@
  * Prints frame_ms_median=..., gpu_ms_median=... and, with --compare or --reference,
  * wrong_pct=... against the exact ray-cast reference; with --visibility and
  * --reference-visibility (and --light-size S), vis_mae=... against the exact visibility of a
- * light with a size. The modes' shadows are hard: their visibility is 0 or 1.
+ * light with a size (the mode's visibility view: fractions under SHADOW_MAP's soft filters).
  *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
@@ -46,6 +46,19 @@ ossref::Mask renderMask(osshar::Renderer& renderer, SilhouetteShadowTechnique& t
     return ossref::maskFromImage(*image);
 }
 
+/** The visibility of light `index`, rendered by the technique's visibility view (a grey level
+ *  per pixel; the clear colour, magenta, marks the background). */
+ossref::VisibilityMask renderVisibility(osshar::Renderer& renderer, SilhouetteShadowTechnique& technique,
+                                        unsigned int index)
+{
+    const SilhouetteShadowTechnique::DebugView previous = technique.getDebugView();
+    technique.setDebugView(SilhouetteShadowTechnique::DEBUG_VISIBILITY);
+    technique.setDebugLight(index);
+    osg::ref_ptr<osg::Image> image = renderer.renderAndCapture(osg::Vec4(1, 0, 1, 1));
+    technique.setDebugView(previous);
+    return ossref::visibilityFromRender(*image);
+}
+
 /** "mask%d.png" with the light index; a name without %d is used as it is for light 0 and
  *  gets "_<index>" before its extension for the others. */
 std::string perLightName(const std::string& pattern, unsigned int index)
@@ -77,17 +90,18 @@ int runWindowed(osshar::PreparedScene& scene, osg::Node* root, SilhouetteShadowT
     return viewer.run();
 }
 
-/** --visibility and --reference-visibility of light @p index: @p mask (the mode's hard answer,
- *  so v is 0 or 1) as a visibility mask, and the exact visibility of the light at
- *  --light-size; with both, their scores (MEASURE.md, "Soft shadows"). 0, or 1 on failure. */
+/** --visibility and --reference-visibility of light @p index: the technique's visibility view
+ *  (fractions under a soft filter; a peer's hard @p mask as v 0 or 1), and the exact visibility of the light
+ *  at --light-size; with both, their scores (MEASURE.md, "Soft shadows"). 0, or 1 on failure. */
 int writeVisibility(const osshar::RenderOptions& options, const osshar::PreparedScene& scene,
-                    const ossref::Camera& camera, const ossref::Mask& mask, unsigned int index)
+                    const ossref::Camera& camera, const ossref::Mask& mask, osshar::Renderer& renderer,
+                    SilhouetteShadowTechnique* technique, unsigned int index)
 {
     int status = 0;
     ossref::VisibilityMask candidate, reference;
-    if (!options.visibility.empty() && !mask.empty())
+    if (!options.visibility.empty() && (technique || !mask.empty()))
     {
-        candidate = ossref::visibilityFromMask(mask);
+        candidate = technique ? renderVisibility(renderer, *technique, index) : ossref::visibilityFromMask(mask);
         if (!ossref::writeVisibility(candidate, perLightName(options.visibility, index)))
             std::cerr << "cannot write " << perLightName(options.visibility, index) << "\n", status = 1;
     }
@@ -241,7 +255,8 @@ int main(int argc, char** argv)
             if (!options.mask.empty() && !ossref::writeMask(mask, perLightName(options.mask, i)))
                 std::cerr << "cannot write " << perLightName(options.mask, i) << "\n", status = 1;
         }
-        if (writeVisibility(options, scene, refCamera, mask, i) != 0) status = 1;
+        if (writeVisibility(options, scene, refCamera, mask, renderer, peer ? nullptr : technique.get(), i) != 0)
+            status = 1;
         if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
         {
             reference = ossref::computeReferenceMask(

@@ -5,13 +5,15 @@
 // and specular), modulated by the texture on unit 0 where there is one.
 // With OSS_DEBUG_MASK the pass writes the shadow mask of light oss_maskLight instead:
 // 1 where that light reaches the surface, 0 where it is blocked or the surface's geometric
-// normal faces away from it (the conventions of the exact reference). With OSS_DEBUG_CLASSES
+// normal faces away from it (the conventions of the exact reference); with
+// OSS_DEBUG_VISIBILITY too, the shadow term itself (its visibility) where the surface faces it. With OSS_DEBUG_CLASSES
 // it writes the class colours of that light (oss_classColor()). Both carry the alpha the
 // shading gives an alpha-tested receiver (OSS_ALPHA_TEST), so the scene's osg::AlphaFunc
 // cuts the mask where it cuts the picture.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
 #pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS, OSS_ALPHA_TEST)
+#pragma import_defines(OSS_DEBUG_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS)
 // OSS_SKIPPED_SLOTS, bit s: slot s is a cube face with nothing to shadow (its newest build
 // drew no caster), left out: its term is 1 everywhere. The OSS_MAX_* and slot defines have
 // their defaults in the prelude (ShaderSource.cpp, shaderPrelude()).
@@ -54,6 +56,10 @@ float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk);
 #define OSS_SLOT_WALK(s) oss_walkLight[s]
 #endif
 #define OSS_SLOT_TERM(s) oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition), oss_eyePosition, OSS_SLOT_WALK(s))
+#elif defined(OSS_FILTER_PCF) || defined(OSS_FILTER_PCSS)
+// SHADOW_MAP under a soft filter: oss_filterTerm() (oss_filter.frag.glsl).
+float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
+#define OSS_SLOT_TERM(s) oss_filterTerm(s, oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #else
 #define OSS_SLOT_TERM(s) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #endif
@@ -97,7 +103,13 @@ void main()
     vec2 c = slot < 0 ? vec2(1.0, 0.0) : oss_shadowSlotClass(slot, oss_eyePosition);
     gl_FragColor = vec4(oss_classColor(c.y > 0.5, facing && c.x >= 0.5).rgb, oss_shadedAlpha());
 #else
-    float lit = facing ? step(0.5, oss_shadowTerm(n, oss_eyePosition)) : 0.0;
+    // The term first, outside the branch: a filter takes derivatives.
+    float term = oss_shadowTerm(n, oss_eyePosition);
+#ifdef OSS_DEBUG_VISIBILITY
+    float lit = facing ? clamp(term, 0.0, 1.0) : 0.0;
+#else
+    float lit = facing ? step(0.5, term) : 0.0;
+#endif
     gl_FragColor = vec4(vec3(lit), oss_shadedAlpha());
 #endif
 }

@@ -10,7 +10,7 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
 #pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
-#pragma import_defines(OSS_SCREEN_VISIBILITY)
+#pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS)
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
@@ -101,7 +101,13 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition)
 #endif
 }
 
+#if defined(OSS_FILTER_PCF) || defined(OSS_FILTER_PCSS)
+// SHADOW_MAP under a soft filter (oss_filter.frag.glsl, linked into the same program): raw depths.
+float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
+#define OSS_PCF_TERM(s, p) oss_filterTerm(s, oss_shadowMap[s], oss_eyeToShadow[s], p)
+#else
 #define OSS_PCF_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)
+#endif
 #if defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS)
@@ -373,7 +379,7 @@ vec2 oss_listClass(int s, vec4 eyePosition)
 #define OSS_SLOT_CLASS(s, p) oss_listClass(s, p)
 #else
 vec2 oss_pcfClass(float p) { return vec2(step(0.5, p), p > 0.0 && p < 1.0 ? 1.0 : 0.0); }
-#define OSS_SLOT_CLASS(s, p) oss_pcfClass(oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p))
+#define OSS_SLOT_CLASS(s, p) oss_pcfClass(OSS_PCF_TERM(s, p))
 #endif
 
 // The class of the light of shadow slot `slot`: its own slot's, or, for a point light with

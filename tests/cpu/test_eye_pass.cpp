@@ -7,6 +7,7 @@
 
 #include <osgShadowSilhouette/ShaderConstants>
 
+#include <map>
 #include <set>
 
 namespace {
@@ -107,15 +108,61 @@ TEST(EyePass, EveryDefineAPlanSetsIsOwned)
     for (SilhouetteShadowTechnique::DebugView view :
          {SilhouetteShadowTechnique::DEBUG_NONE, SilhouetteShadowTechnique::DEBUG_SHADOW_MASK,
           SilhouetteShadowTechnique::DEBUG_CLASSES, SilhouetteShadowTechnique::DEBUG_SILHOUETTE_PIXELS,
-          SilhouetteShadowTechnique::DEBUG_SILHOUETTE_MAP})
+          SilhouetteShadowTechnique::DEBUG_SILHOUETTE_MAP, SilhouetteShadowTechnique::DEBUG_VISIBILITY})
         for (SilhouetteShadowTechnique::Mode mode :
              {SilhouetteShadowTechnique::SHADOW_MAP, SilhouetteShadowTechnique::SILHOUETTE_MAP,
               SilhouetteShadowTechnique::HYBRID, SilhouetteShadowTechnique::SHADOW_VOLUME})
-        {
-            p.mode = mode;
-            p.debugView = view;
-            for (const auto& define : eyePassDefines(p)) EXPECT_EQ(owned.count(define.first), 1u) << define.first;
-        }
+            for (SilhouetteShadowTechnique::Filter filter :
+                 {SilhouetteShadowTechnique::FILTER_PCF_2X2, SilhouetteShadowTechnique::FILTER_PCF,
+                  SilhouetteShadowTechnique::FILTER_PCSS})
+            {
+                p.mode = mode;
+                p.debugView = view;
+                p.filter = filter;
+                for (const auto& define : eyePassDefines(p)) EXPECT_EQ(owned.count(define.first), 1u) << define.first;
+            }
+}
+
+// SHADOW_MAP's soft filters: one define each (the window's N as FILTER_PCF's value), none in
+// the other modes, whose eye passes keep their own hard answer.
+TEST(EyePass, SoftFiltersInShadowMapOnly)
+{
+    using T = SilhouetteShadowTechnique;
+    struct Case
+    {
+        T::Mode mode;
+        T::Filter filter;
+        const char* pcf; ///< FILTER_PCF's value, "" where it is absent
+        bool pcss;
+    };
+    const Case cases[] = {
+        {T::SHADOW_MAP, T::FILTER_PCF, "5", false},    {T::SHADOW_MAP, T::FILTER_PCSS, "", true},
+        {T::SHADOW_MAP, T::FILTER_PCF_2X2, "", false}, {T::SILHOUETTE_MAP, T::FILTER_PCSS, "", false},
+        {T::HYBRID, T::FILTER_PCF, "", false},         {T::SHADOW_VOLUME, T::FILTER_PCSS, "", false},
+    };
+    for (const Case& c : cases)
+    {
+        EyePassPlan p = plan(c.mode);
+        p.filter = c.filter;
+        p.filterWindow = 5;
+        const Defines d = eyePassDefines(p);
+        const auto pcf = d.find(shader::DEFINE_FILTER_PCF);
+        EXPECT_EQ(pcf == d.end() ? std::string() : pcf->second, c.pcf) << T::modeName(c.mode) << " " << c.filter;
+        EXPECT_EQ(d.count(shader::DEFINE_FILTER_PCSS), c.pcss ? 1u : 0u) << T::modeName(c.mode) << " " << c.filter;
+    }
+}
+
+// The visibility view is the mask's pass without its threshold.
+TEST(EyePass, VisibilityViewIsTheMaskUnthresholded)
+{
+    for (const bool visibility : {true, false})
+    {
+        EyePassPlan p = plan(SilhouetteShadowTechnique::SHADOW_MAP);
+        p.debugView =
+            visibility ? SilhouetteShadowTechnique::DEBUG_VISIBILITY : SilhouetteShadowTechnique::DEBUG_SHADOW_MASK;
+        const Defines d = eyePassDefines(p);
+        EXPECT_EQ(d.count(shader::DEFINE_DEBUG_MASK) + d.count(shader::DEFINE_DEBUG_VISIBILITY), visibility ? 2u : 1u);
+    }
 }
 
 // Applying a frame's defines removes what an earlier frame set and keeps what is not the

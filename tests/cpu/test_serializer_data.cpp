@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <osg/Geode>
+#include <osg/LightSource>
+#include <osg/ValueObject>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osgShadow/ShadowedScene>
@@ -84,3 +86,32 @@ TEST_P(DataFile, HoldsTheBuiltInSceneAndItsLight)
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DataFile, ::testing::Values("default", "spheres", "poles", "cubes"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// data/soft.osgt: the default scene under PCSS, its sun 2 degrees wide by its LightSource's
+// own ShadowLightSize (docs/soft-shadows.md): a file keeps both.
+TEST(SoftDataFile, KeepsItsFilterAndItsLightsSize)
+{
+    osg::ref_ptr<osg::Node> node = osgDB::readRefNodeFile(dataFile("soft"));
+    osgShadow::ShadowedScene* scene = dynamic_cast<osgShadow::ShadowedScene*>(node.get());
+    ASSERT_NE(scene, nullptr);
+    const Technique* technique = dynamic_cast<const Technique*>(scene->getShadowTechnique());
+    ASSERT_NE(technique, nullptr);
+    EXPECT_EQ(technique->getFilter(), Technique::FILTER_PCSS);
+    EXPECT_EQ(technique->getLightSize(), 0.0f) << "the light's own size, not the technique's";
+    struct FindSize : osg::NodeVisitor
+    {
+        FindSize() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        void apply(osg::LightSource& ls) override
+        {
+            found = ls.getUserValue(Technique::LIGHT_SIZE_USER_VALUE, size) || found;
+            traverse(ls);
+        }
+        double size = 0.0;
+        bool found = false;
+    } find;
+    node->accept(find);
+    EXPECT_TRUE(find.found);
+    EXPECT_EQ(find.size, 2.0);
+    const CountVisitor file = count(*node), expected = count(*osshar::createScene("default").root);
+    EXPECT_EQ(file.drawables, expected.drawables);
+}

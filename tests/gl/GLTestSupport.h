@@ -89,6 +89,28 @@ struct ShadowedRender
         return ossref::maskFromImage(*image);
     }
 
+    /** The technique's visibility of light `index` (DEBUG_VISIBILITY: the shadow term before
+     *  the mask's threshold), after `frames` frames. */
+    ossref::VisibilityMask visibility(unsigned int index = 0, int frames = 2)
+    {
+        renderer->timeFrames(0, frames);
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_VISIBILITY);
+        technique->setDebugLight(index);
+        osg::ref_ptr<osg::Image> image = renderer->renderAndCapture(osg::Vec4(1, 0, 1, 1));
+        technique->setDebugView(SilhouetteShadowTechnique::DEBUG_NONE);
+        return ossref::visibilityFromRender(*image);
+    }
+
+    /** The exact visibility of light `index` at size `size` (MEASURE.md, "Soft shadows"). */
+    ossref::VisibilityMask referenceVisibility(unsigned int index, double size) const
+    {
+        ossref::Light light = osshar::referenceLight(scene.lights.at(index));
+        light.size = size;
+        return ossref::computeReferenceVisibility(
+            *scene.content, osshar::referenceCamera(scene.view, renderer->width(), renderer->height()), light, ~0u,
+            ~0u);
+    }
+
     /** The technique's mask of light `index` after `frames` frames, scored against the
      *  exact reference. */
     ossref::Comparison scoreMask(unsigned int index = 0, int frames = 2)

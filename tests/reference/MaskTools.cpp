@@ -249,6 +249,14 @@ VisibilityMask visibilityFromImage(const osg::Image& image)
     });
 }
 
+VisibilityMask visibilityFromRender(const osg::Image& image)
+{
+    const GLenum format = image.getPixelFormat();
+    if (image.getDataType() != GL_UNSIGNED_BYTE || (format != GL_RGB && format != GL_RGBA)) return VisibilityMask();
+    return maskOfImage<VisibilityMask>(
+        image, [](const unsigned char* p) { return p[0] != p[1] ? VIS_BACKGROUND : encodeVisibility(p[0] / 255.0); });
+}
+
 bool writeVisibility(const VisibilityMask& mask, const std::string& path)
 {
     osg::ref_ptr<osg::Image> image = imageFromVisibility(mask);

@@ -428,6 +428,12 @@ osg::ref_ptr<osg::Image> imageFromVisibility(const VisibilityMask& mask);
  *  Any other image gives an empty mask. */
 VisibilityMask visibilityFromImage(const osg::Image& image);
 
+/** A visibility mask from a rendered visibility view (SilhouetteShadowTechnique's
+ *  DEBUG_VISIBILITY, 8-bit RGB or RGBA, bottom row first): a grey level g gives visibility
+ *  g / 255; a pixel whose red and green differ (the view's magenta clear colour) is
+ *  background. Any other image gives an empty mask. */
+VisibilityMask visibilityFromRender(const osg::Image& image);
+
 /** Write the mask as a 16-bit grey image through osgDB (PNG for a .png path). */
 bool writeVisibility(const VisibilityMask& mask, const std::string& path);
 

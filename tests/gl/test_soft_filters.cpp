@@ -1,0 +1,184 @@
+// SHADOW_MAP's soft filters (property Filter, docs/soft-shadows.md) against the exact
+// visibility of lights with a size (MEASURE.md, "Soft shadows"): PCSS follows the reference's
+// penumbrae for a sun, a point light and a spot light; FILTER_PCF widens the filtered band by
+// its window; size 0 and a 1 x 1 window are the 2x2 baseline; a light's own size wins over
+// the technique's; refused sizes and modes without filters warn and stay hard.
+#include "GLTestSupport.h"
+#include "NotifyCapture.h"
+
+#include <osg/LightSource>
+#include <osg/ValueObject>
+
+#include <cmath>
+
+using osstest::ShadowedRender;
+using osstest::SilhouetteShadowTechnique;
+
+namespace {
+
+constexpr int W = 512, H = 384;
+constexpr unsigned int MAP = 2048;
+
+struct SoftCase
+{
+    const char* name;
+    const char* light; ///< "sun", "point" or "spot"
+    double size;       ///< degrees (sun) or scene units
+    /** PCSS's vis_mae_penumbra bound: measured 0.043 (sun), 0.041 (point), 0.039 (spot); the
+     *  2x2 baseline measures 0.21-0.22, and PCSS with its penumbra estimate removed too. */
+    double penumbraBound;
+};
+
+const SoftCase kCases[] = {
+    {"Sun2Degrees", "sun", 2.0, 0.06},
+    {"Point03", "point", 0.3, 0.06},
+    {"Spot03", "spot", 0.3, 0.06},
+};
+
+osshar::RenderOptions optionsFor(const std::string& light)
+{
+    osshar::RenderOptions options; // the default scene, its sun
+    osshar::LightArg arg;
+    if (light == "sun") return options;
+    arg.directional = false;
+    arg.vector = osg::Vec3d(-3.0, -4.0, 9.0);
+    if (light == "spot")
+    {
+        arg.spotDirection = osg::Vec3d(0.3, 0.4, -0.9);
+        arg.spotCutoff = 40.0;
+    }
+    options.lights.push_back(arg);
+    return options;
+}
+
+ossref::VisibilityComparison score(ShadowedRender& r, const ossref::VisibilityMask& reference)
+{
+    const ossref::VisibilityComparison c = ossref::compareVisibility(reference, r.visibility());
+    EXPECT_TRUE(c.valid) << c.error;
+    return c;
+}
+
+/** Pixels whose visibility lies strictly inside (0.02, 0.98): the filtered band. */
+long long fractionalPixels(const ossref::VisibilityMask& m)
+{
+    long long n = 0;
+    for (uint16_t v : m.value)
+        if (v != ossref::VIS_BACKGROUND)
+        {
+            const double f = ossref::decodeVisibility(v);
+            n += f > 0.02 && f < 0.98;
+        }
+    return n;
+}
+
+class SoftFilter : public ::testing::TestWithParam<SoftCase>
+{
+};
+
+TEST_P(SoftFilter, PcssFollowsTheExactPenumbra)
+{
+    const SoftCase& c = GetParam();
+    ShadowedRender r(optionsFor(c.light), "shadowmap", MAP, W, H);
+    ASSERT_TRUE(r.valid());
+    const ossref::VisibilityMask reference = r.referenceVisibility(0, c.size);
+    r.technique->setLightSize(float(c.size));
+    const ossref::VisibilityComparison hard = score(r, reference);
+    r.technique->setFilter(SilhouetteShadowTechnique::FILTER_PCSS);
+    const ossref::VisibilityComparison pcss = score(r, reference);
+    std::printf("[ soft     ] %s: penumbra pixels %lld; vis_mae_penumbra 2x2 %.4f, PCSS %.4f; vis_mae %.5f, %.5f; "
+                "hard_wrong_pct %.4f, %.4f\n",
+                c.name, pcss.penumbraPixels, hard.visMaePenumbra, pcss.visMaePenumbra, hard.visMae, pcss.visMae,
+                hard.hardWrongPct, pcss.hardWrongPct);
+    EXPECT_GT(pcss.penumbraPixels, 500); // the light's size makes penumbrae to score
+    EXPECT_LE(pcss.visMaePenumbra, c.penumbraBound);
+    EXPECT_LT(pcss.visMaePenumbra, 0.35 * hard.visMaePenumbra);
+    EXPECT_LE(pcss.visMae, 0.5 * hard.visMae);
+    EXPECT_LE(pcss.hardWrongPct, 0.15); // SHADOW_MAP's hard bound (ModeBounds.h)
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, SoftFilter, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<SoftCase>& info) { return info.param.name; });
+
+TEST(SoftFilters, SizeZeroAndAOneTexelWindowAreTheBaseline)
+{
+    ShadowedRender r("default", "shadowmap", MAP, W, H);
+    ASSERT_TRUE(r.valid());
+    const ossref::Mask reference = r.reference();
+    const ossref::Comparison baseline = ossref::compareMasks(r.mask(), reference);
+    for (SilhouetteShadowTechnique::Filter filter :
+         {SilhouetteShadowTechnique::FILTER_PCSS, SilhouetteShadowTechnique::FILTER_PCF})
+    {
+        r.technique->setFilter(filter);
+        r.technique->setFilterWindow(1);
+        const ossref::Comparison c = ossref::compareMasks(r.mask(), reference);
+        std::printf("[ soft     ] filter %d at size 0 / window 1: %lld wrong pixels (2x2 PCF: %lld)\n", int(filter),
+                    c.wrongPixels, baseline.wrongPixels);
+        // The same 2x2 PCF, its comparisons made in the shader (against the receiver's plane)
+        // instead of by the texture unit: a few pixels apart along the edges.
+        EXPECT_LE(std::llabs(c.wrongPixels - baseline.wrongPixels), 20 + baseline.wrongPixels / 2);
+        EXPECT_LE(c.wrongPct, 0.15);
+    }
+}
+
+TEST(SoftFilters, ThePcfWindowWidensTheFilteredBand)
+{
+    ShadowedRender r("default", "shadowmap", 1024, W, H);
+    ASSERT_TRUE(r.valid());
+    r.technique->setFilter(SilhouetteShadowTechnique::FILTER_PCF);
+    r.technique->setFilterWindow(1);
+    const long long one = fractionalPixels(r.visibility());
+    r.technique->setFilterWindow(7);
+    const long long seven = fractionalPixels(r.visibility());
+    const ossref::Comparison hard = ossref::compareMasks(r.mask(), r.reference());
+    std::printf("[ soft     ] fractional pixels: window 1 %lld, window 7 %lld; window 7 hard wrong_pct %.4f\n", one,
+                seven, hard.wrongPct);
+    // The band is about N texels wide: seven texels are more than four times one texel's
+    // 1 to 2 (less where the edge meets another shadow).
+    EXPECT_GT(seven, 4 * one);
+    EXPECT_LE(hard.wrongPct, 0.3); // a blurred hard edge still crosses 0.5 at the edge
+}
+
+TEST(SoftFilters, ALightsOwnSizeWins)
+{
+    ShadowedRender r("default", "shadowmap", MAP, W, H);
+    ASSERT_TRUE(r.valid());
+    r.technique->setFilter(SilhouetteShadowTechnique::FILTER_PCSS);
+    r.technique->setLightSize(2.0f);
+    const ossref::VisibilityMask technique = r.visibility();
+    r.technique->setLightSize(0.0f);
+    const ossref::VisibilityMask hard = r.visibility();
+    osg::Light* light = r.scene.lights.at(0).source->getLight();
+    light->setUserValue(SilhouetteShadowTechnique::LIGHT_SIZE_USER_VALUE, 2.0f);
+    const ossref::VisibilityMask own = r.visibility();
+    EXPECT_EQ(own.value, technique.value) << "a size of 2 on the osg::Light renders as LightSize 2";
+    EXPECT_NE(own.value, hard.value);
+
+    // On the LightSource (found by init()), as a double.
+    light->getUserDataContainer()->removeUserObject(
+        light->getUserDataContainer()->getUserObjectIndex(SilhouetteShadowTechnique::LIGHT_SIZE_USER_VALUE));
+    r.scene.lights.at(0).source->setUserValue(SilhouetteShadowTechnique::LIGHT_SIZE_USER_VALUE, 2.0);
+    r.technique->dirty();
+    EXPECT_EQ(r.visibility(0, 3).value, technique.value) << "a size of 2 on the LightSource renders as LightSize 2";
+
+    // A size no sun can have: a warning naming it, and the hard shadow.
+    osstest::NotifyCapture capture;
+    r.scene.lights.at(0).source->setUserValue(SilhouetteShadowTechnique::LIGHT_SIZE_USER_VALUE, 60.0);
+    EXPECT_EQ(r.visibility().value, hard.value);
+    EXPECT_TRUE(capture.warned("60 degrees is no directional light's angular radius")) << capture.warnings();
+    EXPECT_TRUE(capture.warned("casts a hard shadow")) << capture.warnings();
+}
+
+TEST(SoftFilters, OtherModesWarnAndStayHard)
+{
+    ShadowedRender r("default", "silhouette", MAP, W, H);
+    ASSERT_TRUE(r.valid());
+    osstest::NotifyCapture capture;
+    r.technique->setFilter(SilhouetteShadowTechnique::FILTER_PCSS);
+    r.technique->setLightSize(2.0f);
+    const ossref::VisibilityMask v = r.visibility();
+    EXPECT_EQ(fractionalPixels(v), 0);
+    EXPECT_TRUE(capture.warned("applies to SHADOW_MAP only")) << capture.warnings();
+    EXPECT_EQ(capture.count("applies to SHADOW_MAP only"), 1);
+}
+
+} // namespace
