@@ -7,6 +7,7 @@
 #include <osg/BlendFunc>
 #include <osg/ColorMask>
 #include <osg/Depth>
+#include <osg/FrontFace>
 #include <osg/PolygonOffset>
 #include <osg/Stencil>
 #include <osg/StencilTwoSided>
@@ -86,6 +87,13 @@ osg::ref_ptr<osg::StateSet> lightCapState()
     return ss;
 }
 
+/** Whether a matrix mirrors (negative determinant of its 3x3 part). */
+bool mirrors(const osg::Matrixd& m)
+{
+    const osg::Vec3d x(m(0, 0), m(0, 1), m(0, 2)), y(m(1, 0), m(1, 1), m(1, 2)), z(m(2, 0), m(2, 1), m(2, 2));
+    return (x ^ y) * z < 0.0;
+}
+
 } // namespace
 
 bool needsZFail(const osg::BoundingSphered& caster, const osg::Vec4d& light, const osg::Vec3d& eye, double nearRadius)
@@ -122,6 +130,13 @@ ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask
     _zfailState = stencilState(true, testRef, testMask, writeMask);
     _zpassState = stencilState(false, testRef, testMask, writeMask);
     _lightCapState = lightCapState();
+    for (const bool mirrored : {false, true})
+    {
+        _frontFaceStates[mirrored] = new osg::StateSet;
+        _frontFaceStates[mirrored]->setAttribute(
+            new osg::FrontFace(mirrored ? osg::FrontFace::CLOCKWISE : osg::FrontFace::COUNTER_CLOCKWISE),
+            osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    }
 }
 
 ShadowVolumeGroup::~ShadowVolumeGroup() = default;
@@ -129,14 +144,16 @@ ShadowVolumeGroup::~ShadowVolumeGroup() = default;
 void ShadowVolumeGroup::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _root->resizeGLObjectBuffers(maxSize); // every entry's transform, volumes and state
-    for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+    for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(), _frontFaceStates[0].get(),
+                              _frontFaceStates[1].get()})
         if (ss) ss->resizeGLObjectBuffers(maxSize);
 }
 
 void ShadowVolumeGroup::releaseGLObjects(osg::State* state) const
 {
     _root->releaseGLObjects(state);
-    for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+    for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(),
+                                    _frontFaceStates[0].get(), _frontFaceStates[1].get()})
         if (ss) ss->releaseGLObjects(state);
 }
 
@@ -184,6 +201,11 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
     sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
     e.zfail = volumeGeometry(vertices.get(), sidesAndDarkCap.get(), box);
+    // A mirroring matrix turns the volume inside out in the window: its counts would be
+    // negative and cancel another caster's where their shadows overlap. The volume's
+    // FrontFace turns it back, so that GL's front faces are those its triangles' own
+    // counter-clockwise winding faces, as without the mirror.
+    e.zSwitch->setStateSet(_frontFaceStates[mirrors(e.caster.world)].get());
     e.lightCap = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.lightCap).get(), box);
     e.lightCap->setStateSet(_lightCapState.get());
     e.zpass = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
