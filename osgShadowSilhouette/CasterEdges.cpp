@@ -41,10 +41,8 @@ struct PathValue
 };
 
 /** Face culling as the eye pass draws a geometry with the state sets of `path` (then
- *  `own`): whether it culls a side that a view ray may pass, so that the ray goes on
- *  behind the surface. A closed mesh wound outward whose inside alone is culled hides that
- *  inside behind its outside; any other culling lets a ray through. */
-bool cullsASeenSide(const osg::NodePath& path, const osg::StateSet* own, bool closedOutward, const osg::Matrixd& world)
+ *  `own`): the window windings it culls (Caster::CULLS_CCW, CULLS_CW). */
+unsigned char culledWindings(const osg::NodePath& path, const osg::StateSet* own)
 {
     PathValue mode, cullFace, frontFace;
     const auto apply = [&](const osg::StateSet& ss) {
@@ -59,18 +57,29 @@ bool cullsASeenSide(const osg::NodePath& path, const osg::StateSet* own, bool cl
     for (const osg::Node* node : path)
         if (node->getStateSet()) apply(*node->getStateSet());
     if (own && (path.empty() || path.back()->getStateSet() != own)) apply(*own);
-    if (!mode.set || !(mode.value & osg::StateAttribute::ON)) return false;
-    if (!closedOutward) return true;
+    if (!mode.set || !(mode.value & osg::StateAttribute::ON)) return 0;
     const auto* cull = dynamic_cast<const osg::CullFace*>(cullFace.attribute);
     const auto* front = dynamic_cast<const osg::FrontFace*>(frontFace.attribute);
     const osg::CullFace::Mode culled = cull ? cull->getMode() : osg::CullFace::BACK;
-    if (culled == osg::CullFace::FRONT_AND_BACK) return true;
+    if (culled == osg::CullFace::FRONT_AND_BACK) return Caster::CULLS_CCW | Caster::CULLS_CW;
+    const bool ccwIsFront = !front || front->getMode() != osg::FrontFace::CLOCKWISE;
+    return (culled == osg::CullFace::FRONT) == ccwIsFront ? Caster::CULLS_CCW : Caster::CULLS_CW;
+}
+
+/** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
+ *  ray may pass, so that the ray goes on behind the surface. A closed mesh wound outward
+ *  whose inside alone is culled hides that inside behind its outside; any other culling
+ *  lets a ray through. */
+bool cullsASeenSide(unsigned char windings, bool closedOutward, const osg::Matrixd& world)
+{
+    if (!windings) return false;
+    if (!closedOutward || windings == (Caster::CULLS_CCW | Caster::CULLS_CW)) return true;
     // The outside is the counter-clockwise side, turned over by a mirroring world matrix.
     const double det =
         (osg::Vec3d(world(0, 0), world(0, 1), world(0, 2)) ^ osg::Vec3d(world(1, 0), world(1, 1), world(1, 2))) *
         osg::Vec3d(world(2, 0), world(2, 1), world(2, 2));
-    const bool outsideIsFront = (!front || front->getMode() != osg::FrontFace::CLOCKWISE) == (det >= 0.0);
-    return (culled == osg::CullFace::FRONT) == outsideIsFront;
+    const unsigned char outside = det >= 0.0 ? Caster::CULLS_CCW : Caster::CULLS_CW;
+    return windings == outside;
 }
 
 } // namespace
@@ -129,7 +138,8 @@ void CasterCollector::apply(osg::Geometry& geometry)
     for (const osg::Node* node : getNodePath())
         if (node->getStateSet() && seeThrough(*node->getStateSet())) caster.seeThrough = true;
     if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
-    if (cullsASeenSide(getNodePath(), geometry.getStateSet(), caster.closed, caster.world)) caster.seeThrough = true;
+    caster.culledWindings = culledWindings(getNodePath(), geometry.getStateSet());
+    if (cullsASeenSide(caster.culledWindings, caster.closed, caster.world)) caster.seeThrough = true;
     _casters.push_back(caster);
 }
 

@@ -242,3 +242,43 @@ TEST(SeeThrough, FaceCullingOverrideAndProtected)
     child->setAttribute(new osg::FrontFace(osg::FrontFace::COUNTER_CLOCKWISE), osg::StateAttribute::PROTECTED);
     EXPECT_FALSE(marked()) << "the drawable's FrontFace COUNTER_CLOCKWISE | PROTECTED";
 }
+
+// The windings the eye pass culls, as GL names them from CullFace and FrontFace (the
+// rasterizer applies a mirroring matrix to the volumes as to the caster, so it is not in
+// them): ShadowVolumeGroup draws the light caps of such a caster apart.
+TEST(SeeThrough, CulledWindings)
+{
+    struct Case
+    {
+        bool cullOn;
+        int cullFace;  // -1: none set
+        int frontFace; // -1: none set
+        bool mirrored;
+        unsigned char expected;
+    };
+    const unsigned char ccw = Caster::CULLS_CCW, cw = Caster::CULLS_CW;
+    for (const Case& c : {Case{false, osg::CullFace::FRONT, -1, false, 0}, Case{true, -1, -1, false, cw},
+                          Case{true, osg::CullFace::FRONT, -1, false, ccw},
+                          Case{true, osg::CullFace::FRONT_AND_BACK, -1, false, (unsigned char)(ccw | cw)},
+                          Case{true, osg::CullFace::BACK, osg::FrontFace::CLOCKWISE, false, ccw},
+                          Case{true, osg::CullFace::FRONT, osg::FrontFace::CLOCKWISE, false, cw},
+                          Case{true, osg::CullFace::BACK, -1, true, cw}})
+    {
+        osg::ref_ptr<osg::Group> scene = new osg::Group;
+        osg::ref_ptr<osg::MatrixTransform> t =
+            new osg::MatrixTransform(c.mirrored ? osg::Matrixd::scale(-1, 1, 1) : osg::Matrixd::identity());
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1)).get());
+        t->addChild(geode.get());
+        scene->addChild(t.get());
+        osg::StateSet* ss = t->getOrCreateStateSet();
+        if (c.cullOn) ss->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+        if (c.cullFace >= 0) ss->setAttribute(new osg::CullFace(osg::CullFace::Mode(c.cullFace)));
+        if (c.frontFace >= 0) ss->setAttribute(new osg::FrontFace(osg::FrontFace::Mode(c.frontFace)));
+        osg::ref_ptr<MeshCache> cache = new MeshCache;
+        const std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+        ASSERT_EQ(casters.size(), 1u);
+        EXPECT_EQ(int(casters[0].culledWindings), int(c.expected))
+            << "cull " << c.cullOn << " " << c.cullFace << " front " << c.frontFace << " mirrored " << c.mirrored;
+    }
+}
