@@ -1,7 +1,9 @@
 #include <osgShadowSilhouette/CasterEdges>
 
 #include <osg/Camera>
+#include <osg/CullFace>
 #include <osg/Depth>
+#include <osg/FrontFace>
 #include <osg/Transform>
 
 namespace osgShadowSilhouette {
@@ -16,6 +18,71 @@ bool seeThrough(const osg::StateSet& ss)
     const auto* depth = dynamic_cast<const osg::Depth*>(ss.getAttribute(osg::StateAttribute::DEPTH));
     return depth && !depth->getWriteMask();
 }
+
+namespace {
+
+/** One value along a node path as osg::State applies it: a value set with OVERRIDE stays in
+ *  force below unless the incoming one is PROTECTED; otherwise the innermost wins. (The
+ *  exact reference has its own, StateSlot in tests/reference: it shares no code with what
+ *  it judges.) */
+struct PathValue
+{
+    const osg::StateAttribute* attribute = nullptr;
+    unsigned int value = 0;
+    bool set = false;
+
+    void push(const osg::StateAttribute* incoming, unsigned int incomingValue)
+    {
+        if (set && (value & osg::StateAttribute::OVERRIDE) && !(incomingValue & osg::StateAttribute::PROTECTED)) return;
+        attribute = incoming;
+        value = incomingValue;
+        set = true;
+    }
+};
+
+/** Face culling as the eye pass draws a geometry with the state sets of `path` (then
+ *  `own`): the window windings it culls (Caster::CULLS_CCW, CULLS_CW). */
+unsigned char culledWindings(const osg::NodePath& path, const osg::StateSet* own)
+{
+    PathValue mode, cullFace, frontFace;
+    const auto apply = [&](const osg::StateSet& ss) {
+        const osg::StateSet::ModeList& modes = ss.getModeList();
+        const auto m = modes.find(GL_CULL_FACE);
+        if (m != modes.end()) mode.push(nullptr, m->second);
+        if (const osg::StateSet::RefAttributePair* p = ss.getAttributePair(osg::StateAttribute::CULLFACE))
+            cullFace.push(p->first.get(), p->second);
+        if (const osg::StateSet::RefAttributePair* p = ss.getAttributePair(osg::StateAttribute::FRONTFACE))
+            frontFace.push(p->first.get(), p->second);
+    };
+    for (const osg::Node* node : path)
+        if (node->getStateSet()) apply(*node->getStateSet());
+    if (own && (path.empty() || path.back()->getStateSet() != own)) apply(*own);
+    if (!mode.set || !(mode.value & osg::StateAttribute::ON)) return 0;
+    const auto* cull = dynamic_cast<const osg::CullFace*>(cullFace.attribute);
+    const auto* front = dynamic_cast<const osg::FrontFace*>(frontFace.attribute);
+    const osg::CullFace::Mode culled = cull ? cull->getMode() : osg::CullFace::BACK;
+    if (culled == osg::CullFace::FRONT_AND_BACK) return Caster::CULLS_CCW | Caster::CULLS_CW;
+    const bool ccwIsFront = !front || front->getMode() != osg::FrontFace::CLOCKWISE;
+    return (culled == osg::CullFace::FRONT) == ccwIsFront ? Caster::CULLS_CCW : Caster::CULLS_CW;
+}
+
+/** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
+ *  ray may pass, so that the ray goes on behind the surface. A closed mesh wound outward
+ *  whose inside alone is culled hides that inside behind its outside; any other culling
+ *  lets a ray through. */
+bool cullsASeenSide(unsigned char windings, bool closedOutward, const osg::Matrixd& world)
+{
+    if (!windings) return false;
+    if (!closedOutward || windings == (Caster::CULLS_CCW | Caster::CULLS_CW)) return true;
+    // The outside is the counter-clockwise side, turned over by a mirroring world matrix.
+    const double det =
+        (osg::Vec3d(world(0, 0), world(0, 1), world(0, 2)) ^ osg::Vec3d(world(1, 0), world(1, 1), world(1, 2))) *
+        osg::Vec3d(world(2, 0), world(2, 1), world(2, 2));
+    const unsigned char outside = det >= 0.0 ? Caster::CULLS_CCW : Caster::CULLS_CW;
+    return windings == outside;
+}
+
+} // namespace
 
 CasterCollector::CasterCollector(MeshCache& cache, unsigned int traversalMask, const ViewPoint& view)
     : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _cache(cache), _view(view)
@@ -71,6 +138,8 @@ void CasterCollector::apply(osg::Geometry& geometry)
     for (const osg::Node* node : getNodePath())
         if (node->getStateSet() && seeThrough(*node->getStateSet())) caster.seeThrough = true;
     if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
+    caster.culledWindings = culledWindings(getNodePath(), geometry.getStateSet());
+    if (cullsASeenSide(caster.culledWindings, caster.closed, caster.world)) caster.seeThrough = true;
     _casters.push_back(caster);
 }
 

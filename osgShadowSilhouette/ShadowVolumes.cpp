@@ -6,7 +6,9 @@
 
 #include <osg/BlendFunc>
 #include <osg/ColorMask>
+#include <osg/CullFace>
 #include <osg/Depth>
+#include <osg/FrontFace>
 #include <osg/PolygonOffset>
 #include <osg/Stencil>
 #include <osg/StencilTwoSided>
@@ -86,6 +88,47 @@ osg::ref_ptr<osg::StateSet> lightCapState()
     return ss;
 }
 
+/** Where a caster's faces are culled, the eye sees some of them from a culled side: such a
+ *  face is not in the depth buffer, and its light cap, pushed back by its slope, could land
+ *  behind the surface the eye sees through it (teapots.DAE: whole runs of pixels where a
+ *  wall seen edge-on from inside lies a few hundredths in front of the lid). So the cap is
+ *  drawn twice, each time with GL's face culling keeping the cap triangles seen from one
+ *  side: with the slope offset (`offset`) where the eye sees the side of the face the eye
+ *  pass draws, with the volumes' one unit where it sees the culled side. `cull` names the
+ *  side this draw leaves out (the volume's FrontFace makes FRONT the side its triangles'
+ *  own counter-clockwise winding faces, mirrored or not). */
+osg::ref_ptr<osg::StateSet> culledCapState(bool offset, osg::CullFace::Mode cull)
+{
+    osg::ref_ptr<osg::StateSet> ss = offset ? lightCapState() : osg::ref_ptr<osg::StateSet>(new osg::StateSet);
+    const auto on = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    ss->setMode(GL_CULL_FACE, on);
+    ss->setAttribute(new osg::CullFace(cull), on);
+    return ss;
+}
+
+/** Whether a matrix mirrors (negative determinant of its 3x3 part). */
+bool mirrors(const osg::Matrixd& m)
+{
+    const osg::Vec3d x(m(0, 0), m(0, 1), m(0, 2)), y(m(1, 0), m(1, 1), m(1, 2)), z(m(2, 0), m(2, 1), m(2, 2));
+    return (x ^ y) * z < 0.0;
+}
+
+/** The light cap's triangles by their winding against their face's: kept (a face toward the
+ *  light) and turned (a face away from it that a TWO_SIDED rule turns toward it). Only a cap
+ *  of every face can hold turned ones (SilhouetteExtractor's writeCaps()). */
+void splitLightCap(const ShadowVolume& volume, std::size_t faces, const std::vector<std::uint8_t>& lit,
+                   osg::DrawElementsUInt& kept, osg::DrawElementsUInt& turned)
+{
+    const auto first = volume.indices.begin() + volume.lightCap.first;
+    const std::size_t count = volume.lightCap.count / 3;
+    const bool everyFace = count == faces && lit.size() == faces;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        osg::DrawElementsUInt& out = everyFace && !lit[k] ? turned : kept;
+        out.insert(out.end(), first + 3 * k, first + 3 * k + 3);
+    }
+}
+
 } // namespace
 
 bool needsZFail(const osg::BoundingSphered& caster, const osg::Vec4d& light, const osg::Vec3d& eye, double nearRadius)
@@ -122,6 +165,16 @@ ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask
     _zfailState = stencilState(true, testRef, testMask, writeMask);
     _zpassState = stencilState(false, testRef, testMask, writeMask);
     _lightCapState = lightCapState();
+    for (const bool mirrored : {false, true})
+    {
+        _frontFaceStates[mirrored] = new osg::StateSet;
+        _frontFaceStates[mirrored]->setAttribute(
+            new osg::FrontFace(mirrored ? osg::FrontFace::CLOCKWISE : osg::FrontFace::COUNTER_CLOCKWISE),
+            osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    }
+    for (const bool offset : {false, true})
+        for (const osg::CullFace::Mode cull : {osg::CullFace::FRONT, osg::CullFace::BACK})
+            _capCullStates[offset][cull == osg::CullFace::BACK] = culledCapState(offset, cull);
 }
 
 ShadowVolumeGroup::~ShadowVolumeGroup() = default;
@@ -129,14 +182,18 @@ ShadowVolumeGroup::~ShadowVolumeGroup() = default;
 void ShadowVolumeGroup::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _root->resizeGLObjectBuffers(maxSize); // every entry's transform, volumes and state
-    for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+    for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(), _capCullStates[0][0].get(),
+                              _capCullStates[0][1].get(), _capCullStates[1][0].get(), _capCullStates[1][1].get(),
+                              _frontFaceStates[0].get(), _frontFaceStates[1].get()})
         if (ss) ss->resizeGLObjectBuffers(maxSize);
 }
 
 void ShadowVolumeGroup::releaseGLObjects(osg::State* state) const
 {
     _root->releaseGLObjects(state);
-    for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get()})
+    for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(),
+                                    _capCullStates[0][0].get(), _capCullStates[0][1].get(), _capCullStates[1][0].get(),
+                                    _capCullStates[1][1].get(), _frontFaceStates[0].get(), _frontFaceStates[1].get()})
         if (ss) ss->releaseGLObjects(state);
 }
 
@@ -184,12 +241,44 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
     sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
     e.zfail = volumeGeometry(vertices.get(), sidesAndDarkCap.get(), box);
-    e.lightCap = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.lightCap).get(), box);
-    e.lightCap->setStateSet(_lightCapState.get());
+    e.lightCaps.clear();
+    const auto addCap = [&](osg::DrawElementsUInt* indices, osg::StateSet* state) {
+        e.lightCaps.push_back(volumeGeometry(vertices.get(), indices, box));
+        e.lightCaps.back()->setStateSet(state);
+    };
+    // A mirroring matrix turns the volume inside out in the window: its counts would be
+    // negative and cancel another caster's where their shadows overlap. The volume's
+    // FrontFace turns it back, so that GL's front faces are those its triangles' own
+    // counter-clockwise winding faces, as without the mirror.
+    const bool mirrored = mirrors(e.caster.world);
+    e.zSwitch->setStateSet(_frontFaceStates[mirrored].get());
+    // The sides of a face the eye pass culls, named by the face's own winding as the volume's
+    // FrontFace names them (a mirror swaps the window's).
+    const unsigned char both = Caster::CULLS_CCW | Caster::CULLS_CW;
+    const unsigned char culled =
+        mirrored && e.caster.culledWindings != both ? e.caster.culledWindings ^ both : e.caster.culledWindings;
+    if (!culled)
+        addCap(drawRange(e.volume, e.volume.lightCap).get(), _lightCapState.get());
+    else
+    {
+        osg::ref_ptr<osg::DrawElementsUInt> kept = new osg::DrawElementsUInt(GL_TRIANGLES),
+                                            turned = new osg::DrawElementsUInt(GL_TRIANGLES);
+        splitLightCap(e.volume, mesh.faces.size(), e.silhouette.lit, *kept, *turned);
+        for (osg::DrawElementsUInt* part : {kept.get(), turned.get()})
+        {
+            if (part->empty()) continue;
+            // The sides of the cap's triangles from which the eye sees their face's culled
+            // side: the face's own, or the other for a turned triangle.
+            const unsigned char seenCulled = part == kept.get() || culled == both ? culled : (culled ^ both);
+            const bool ccw = seenCulled == Caster::CULLS_CCW;
+            if (seenCulled != both) addCap(part, _capCullStates[1][ccw ? 0 : 1].get());        // leaves them out
+            addCap(part, seenCulled == both ? nullptr : _capCullStates[0][ccw ? 1 : 0].get()); // keeps only them
+        }
+    }
     e.zpass = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
     osg::ref_ptr<osg::Geode> failGeode = new osg::Geode, passGeode = new osg::Geode;
     failGeode->addDrawable(e.zfail.get());
-    failGeode->addDrawable(e.lightCap.get());
+    for (const osg::ref_ptr<osg::Geometry>& cap : e.lightCaps) failGeode->addDrawable(cap.get());
     passGeode->addDrawable(e.zpass.get());
     failGeode->setStateSet(_zfailState.get());
     passGeode->setStateSet(_zpassState.get());
@@ -226,7 +315,7 @@ unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const
     for (std::size_t i = 0; i < casters.size(); ++i)
     {
         Entry& e = _entries[i];
-        if (!lightChanged && e.zfail && e.caster == casters[i])
+        if (!lightChanged && e.zfail && e.caster == casters[i] && e.caster.culledWindings == casters[i].culledWindings)
         {
             e.caster.seeThrough = casters[i].seeThrough; // how it is drawn, not its volume
             continue;
@@ -256,7 +345,8 @@ void ShadowVolumeGroup::cull(osgUtil::CullVisitor& cv, const osg::Vec3d& eye, do
         }
         if (e.zfail->getDrawCallback() != e.conditional.get()) e.zfail->setDrawCallback(e.conditional.get());
         if (e.zpass->getDrawCallback() != e.conditional.get()) e.zpass->setDrawCallback(e.conditional.get());
-        if (e.lightCap->getDrawCallback() != e.conditional.get()) e.lightCap->setDrawCallback(e.conditional.get());
+        for (const osg::ref_ptr<osg::Geometry>& cap : e.lightCaps)
+            if (cap->getDrawCallback() != e.conditional.get()) cap->setDrawCallback(e.conditional.get());
         const bool drawn = applyScissor(e, receivers, worldToClip, viewport);
         e.transform->setNodeMask(drawn ? ~0u : 0u);
         if (!drawn)

@@ -14,6 +14,8 @@
 
 #include <osg/AlphaFunc>
 #include <osg/Billboard>
+#include <osg/CullFace>
+#include <osg/FrontFace>
 #include <osg/Geode>
 #include <osg/LOD>
 #include <osg/Geometry>
@@ -931,6 +933,230 @@ TEST(ReferenceCutout, CastersOnlyShadowSceneFiltersToo)
     const Mask m = tracer.render(topCamera(), kCutoutLight);
     EXPECT_EQ(footprintShadow(m), 200);
     EXPECT_EQ(ground(m, -4.25, -0.75), ossref::MASK_LIT);
+}
+
+// ---------------------------------------------------------------------------------------
+// Face culling
+//
+// The quad [-1, 1]^2 at z = 4 over the ground, wound clockwise as the top camera sees it:
+// the camera sees its back under OpenGL's default FrontFace (COUNTER_CLOCKWISE). Light
+// toward (0.25, 0, 1): ground point (x, y) lies under quad point (x + 1, y), the shadow is
+// [-2, 0] x [-1, 1]. The quad covers the 20 x 20 pixels whose ground points lie in
+// (-1, 1)^2 (its edges at +-1.004): seen, they are its top, lit; seen through, the ground,
+// shadowed for x < 0 (200 pixels) and lit for x > 0 (200). The shadow outside the quad,
+// x in (-2, -1), is 10 x 20 = 200 pixels either way: shadow rays see both sides.
+
+const Light kCullLight = directional({0.25, 0, 1});
+
+/** The ground and the quad, returned through `caster` to hang state on. */
+osg::ref_ptr<osg::Group> culledQuadScene(osg::ref_ptr<osg::Geometry>& caster)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+    caster = quad(1, -1, -1, 1, 4); // (1, -1), (-1, -1), (-1, 1), (1, 1): clockwise from above
+    root->addChild(geode(caster.get()));
+    return root;
+}
+
+enum class Seen
+{
+    Quad,
+    Ground
+};
+
+Mask cullMask(const osg::Node& root)
+{
+    return ossref::computeReferenceMask(root, topCamera(), kCullLight);
+}
+
+/** The mask of a culledQuadScene: what the camera sees where the quad is, and the quad's
+ *  shadow beside it. */
+void expectSeen(const Mask& m, Seen seen)
+{
+    const bool through = seen == Seen::Ground;
+    EXPECT_EQ(countIn(m, -2, -1, -1, 1, ossref::MASK_NO_LIGHT), 200); // the quad casts
+    EXPECT_EQ(countIn(m, -1, 0, -1, 1, ossref::MASK_NO_LIGHT), through ? 200 : 0);
+    EXPECT_EQ(countIn(m, 0, 1, -1, 1, ossref::MASK_LIT), 200);
+    EXPECT_EQ(m.count(ossref::MASK_NO_LIGHT), through ? 400 : 200);
+    EXPECT_EQ(m.count(ossref::MASK_BACKGROUND), kBackground);
+    EXPECT_EQ(ground(m, -0.45, 0.05), through ? ossref::MASK_NO_LIGHT : ossref::MASK_LIT);
+}
+
+TEST(ReferenceCulling, BackFaceSeenThroughWithCullingOn)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    osg::ref_ptr<osg::Group> root = culledQuadScene(caster);
+    caster->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+    const ossref::TriangleSoup soup = ossref::collectTriangles(*root);
+    EXPECT_EQ(soup.culled,
+              (std::vector<uint8_t>{ossref::CULL_NONE, ossref::CULL_NONE, ossref::CULL_CW_SIDE, ossref::CULL_CW_SIDE}));
+    expectSeen(cullMask(*root), Seen::Ground);
+
+    // The visibility mask's primary rays see through it too.
+    const ossref::VisibilityMask v = ossref::computeReferenceVisibility(*root, topCamera(), kCullLight);
+    EXPECT_EQ(v.visibilityGL(pixelOf(-0.45), pixelOf(0.05)), 0.0);
+    EXPECT_EQ(v.visibilityGL(pixelOf(0.45), pixelOf(0.05)), 1.0);
+
+    // An osg::CullFace BACK is the default's.
+    caster->getStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK));
+    expectSeen(cullMask(*root), Seen::Ground);
+}
+
+TEST(ReferenceCulling, CullingOffShowsTheQuad)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    osg::ref_ptr<osg::Group> root = culledQuadScene(caster);
+    EXPECT_TRUE(ossref::collectTriangles(*root).culled.empty()); // no culling, no table
+    expectSeen(cullMask(*root), Seen::Quad);
+
+    // A CullFace without GL_CULL_FACE, or with it OFF, culls nothing.
+    caster->getOrCreateStateSet()->setAttribute(new osg::CullFace(osg::CullFace::FRONT_AND_BACK));
+    expectSeen(cullMask(*root), Seen::Quad);
+    caster->getStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
+    EXPECT_TRUE(ossref::collectTriangles(*root).culled.empty());
+    expectSeen(cullMask(*root), Seen::Quad);
+}
+
+TEST(ReferenceCulling, CullFaceAndFrontFaceDecideTheSide)
+{
+    struct Case
+    {
+        osg::CullFace::Mode cull;
+        osg::FrontFace::Mode front;
+        uint8_t culled;
+        Seen seen; // the camera sees the quad's clockwise side
+    };
+    const auto ccw = osg::FrontFace::COUNTER_CLOCKWISE;
+    const auto cw = osg::FrontFace::CLOCKWISE;
+    for (const Case& c : {Case{osg::CullFace::BACK, ccw, ossref::CULL_CW_SIDE, Seen::Ground},
+                          Case{osg::CullFace::BACK, cw, ossref::CULL_CCW_SIDE, Seen::Quad},
+                          Case{osg::CullFace::FRONT, ccw, ossref::CULL_CCW_SIDE, Seen::Quad},
+                          Case{osg::CullFace::FRONT, cw, ossref::CULL_CW_SIDE, Seen::Ground},
+                          Case{osg::CullFace::FRONT_AND_BACK, ccw, ossref::CULL_BOTH_SIDES, Seen::Ground},
+                          Case{osg::CullFace::FRONT_AND_BACK, cw, ossref::CULL_BOTH_SIDES, Seen::Ground}})
+    {
+        SCOPED_TRACE(testing::Message() << "CullFace " << c.cull << ", FrontFace " << c.front);
+        osg::ref_ptr<osg::Geometry> caster;
+        osg::ref_ptr<osg::Group> root = culledQuadScene(caster);
+        osg::StateSet* ss = caster->getOrCreateStateSet();
+        ss->setAttributeAndModes(new osg::CullFace(c.cull));
+        ss->setAttribute(new osg::FrontFace(c.front));
+        const ossref::TriangleSoup soup = ossref::collectTriangles(*root);
+        ASSERT_EQ(soup.culled.size(), 4u);
+        EXPECT_EQ(soup.culled[2], c.culled);
+        EXPECT_EQ(soup.culled[3], c.culled);
+        expectSeen(cullMask(*root), c.seen);
+    }
+}
+
+// The quad alone, seen from above and from below (the camera mirrored through z = 0 sees
+// the quad on the same 20 x 20 pixels, its edges at +-0.996), lit from the camera's side.
+TEST(ReferenceCulling, FrontAndBackHidesTheQuadFromBothSides)
+{
+    Camera below = topCamera();
+    below.eye = osg::Vec3d(0, 0, -1000);
+    for (const osg::CullFace::Mode mode : {osg::CullFace::BACK, osg::CullFace::FRONT_AND_BACK})
+    {
+        SCOPED_TRACE(testing::Message() << "CullFace " << mode);
+        osg::ref_ptr<osg::Geometry> caster = quad(1, -1, -1, 1, 4);
+        caster->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(mode));
+        const ossref::Tracer tracer(ossref::collectTriangles(*geode(caster.get())));
+        const bool both = mode == osg::CullFace::FRONT_AND_BACK;
+        EXPECT_EQ(tracer.triangleCount(), both ? 0u : 2u);
+        // From above the camera sees the back; from below the front, unless both are culled.
+        EXPECT_EQ(tracer.render(topCamera(), directional({0, 0, 1})).count(ossref::MASK_LIT), 0);
+        EXPECT_EQ(tracer.render(below, directional({0, 0, -1})).count(ossref::MASK_LIT), both ? 0 : 400);
+    }
+}
+
+TEST(ReferenceCulling, OverrideAndProtected)
+{
+    osg::ref_ptr<osg::Geometry> caster;
+    osg::ref_ptr<osg::Group> root = culledQuadScene(caster);
+    osg::StateSet* child = caster->getOrCreateStateSet();
+    child->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+    osg::StateSet* parent = casterParentState(*root);
+    const auto expectStep = [&](const char* step, Seen seen) {
+        SCOPED_TRACE(step);
+        expectSeen(cullMask(*root), seen);
+    };
+
+    // The mode: the parent's OFF with OVERRIDE beats the drawable's ON, unless that is
+    // PROTECTED.
+    parent->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    expectStep("parent OFF | OVERRIDE", Seen::Quad);
+    child->setMode(GL_CULL_FACE, osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    expectStep("child ON | PROTECTED", Seen::Ground);
+
+    // The CullFace: the parent's FRONT with OVERRIDE beats the drawable's BACK and culls
+    // the side the camera does not see, unless the drawable's is PROTECTED.
+    parent->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+    child->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+    parent->setAttribute(new osg::CullFace(osg::CullFace::FRONT), osg::StateAttribute::OVERRIDE);
+    child->setAttribute(new osg::CullFace(osg::CullFace::BACK));
+    expectStep("parent FRONT | OVERRIDE", Seen::Quad);
+    child->setAttribute(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::PROTECTED);
+    expectStep("child BACK | PROTECTED", Seen::Ground);
+
+    // The FrontFace alike: the parent's CLOCKWISE with OVERRIDE makes the seen side the
+    // front, unless the drawable's COUNTER_CLOCKWISE is PROTECTED.
+    parent->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE), osg::StateAttribute::OVERRIDE);
+    child->setAttribute(new osg::FrontFace(osg::FrontFace::COUNTER_CLOCKWISE));
+    expectStep("parent CLOCKWISE | OVERRIDE", Seen::Quad);
+    child->setAttribute(new osg::FrontFace(osg::FrontFace::COUNTER_CLOCKWISE), osg::StateAttribute::PROTECTED);
+    expectStep("child COUNTER_CLOCKWISE | PROTECTED", Seen::Ground);
+}
+
+// The winding is the world's: a quad wound counter-clockwise from above, mirrored by its
+// transform, shows its back to the camera, as GL draws it.
+TEST(ReferenceCulling, MirroringTransformTurnsTheQuadOver)
+{
+    for (const bool mirrored : {false, true})
+    {
+        SCOPED_TRACE(testing::Message() << "mirrored " << mirrored);
+        osg::ref_ptr<osg::Group> root = new osg::Group;
+        root->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+        osg::ref_ptr<osg::MatrixTransform> t =
+            new osg::MatrixTransform(mirrored ? osg::Matrixd::scale(-1, 1, 1) : osg::Matrixd::identity());
+        t->addChild(geode(quad(-1, 1, -1, 1, 4).get()));
+        t->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+        root->addChild(t.get());
+        expectSeen(cullMask(*root), mirrored ? Seen::Ground : Seen::Quad);
+    }
+}
+
+// A culled cut-out: the checkerboard quad, wound clockwise from above. Alone under a light
+// straight down, its opaque texels show (200 pixels, as in PrimaryRaysSeeThroughHoles)
+// when the camera sees its front (FrontFace CLOCKWISE) and nothing when it sees the culled
+// back; over the ground its shadow keeps its holes either way (200 of the 400 footprint
+// pixels of the light toward (1, 0, 1)).
+TEST(ReferenceCulling, CulledCutouts)
+{
+    for (const bool frontSeen : {false, true})
+    {
+        SCOPED_TRACE(testing::Message() << "front seen " << frontSeen);
+        osg::ref_ptr<osg::Geometry> caster = texturedQuad(1, -1, -1, 1, 4);
+        osg::StateSet* ss = caster->getOrCreateStateSet();
+        ss->setTextureAttributeAndModes(0, texture2D(checkerboard().get(), osg::Texture::NEAREST).get());
+        ss->setAttributeAndModes(new osg::AlphaFunc(osg::AlphaFunc::GREATER, 0.5f));
+        ss->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+        if (frontSeen) ss->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
+
+        osg::ref_ptr<osg::Group> alone = new osg::Group;
+        alone->addChild(geode(caster.get()));
+        const ossref::TriangleSoup soup = ossref::collectTriangles(*alone);
+        EXPECT_EQ(soup.cutout, (std::vector<int>{0, 0}));
+        ASSERT_EQ(soup.culled.size(), 2u);
+        const Mask m = ossref::computeReferenceMask(*alone, topCamera(), directional({0, 0, 1}));
+        EXPECT_EQ(m.count(ossref::MASK_LIT), frontSeen ? 200 : 0);
+
+        osg::ref_ptr<osg::Group> withGround = new osg::Group;
+        withGround->addChild(geode(quad(-10, 10, -10, 10, 0).get()));
+        withGround->addChild(alone->getChild(0));
+        const Mask shadow = ossref::computeReferenceMask(*withGround, topCamera(), kCutoutLight);
+        EXPECT_EQ(footprintShadow(shadow), 200);
+        EXPECT_EQ(shadow.count(ossref::MASK_NO_LIGHT), 200);
+    }
 }
 
 // ---------------------------------------------------------------------------------------

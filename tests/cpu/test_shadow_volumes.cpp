@@ -4,7 +4,9 @@
 
 #include "Meshes.h"
 
+#include <osg/CullFace>
 #include <osg/Depth>
+#include <osg/FrontFace>
 #include <osg/Geode>
 #include <osg/MatrixTransform>
 
@@ -132,4 +134,151 @@ TEST(SeeThrough, FromTheStateOnTheCastersPath)
     EXPECT_TRUE(casters[0].seeThrough) << "under a transparent group";
     EXPECT_FALSE(casters[1].seeThrough);
     EXPECT_TRUE(casters[2].seeThrough) << "its own osg::Depth writes nothing";
+}
+
+// Face culling lets a view ray pass a caster's culled side and end behind it, so such a
+// caster is marked like a see-through one: GL_CULL_FACE, osg::CullFace and osg::FrontFace
+// accumulated along the path as osg::State does, the side named by the world's winding.
+// Only a closed mesh wound outward whose inside alone is culled keeps z-pass.
+TEST(SeeThrough, FromFaceCulling)
+{
+    const auto collect = [](osg::Node& node) {
+        osg::ref_ptr<osg::Group> scene = new osg::Group;
+        scene->addChild(&node);
+        osg::ref_ptr<MeshCache> cache = new MeshCache;
+        const std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+        EXPECT_EQ(casters.size(), 1u);
+        return !casters.empty() && casters[0].seeThrough;
+    };
+    // A closed box (wound outward) and an open quad, each under a group that carries the state.
+    const auto closedBox = [] {
+        osg::ref_ptr<osg::Geode> g = new osg::Geode;
+        g->addDrawable(osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1)).get());
+        return g;
+    };
+    const auto openQuad = [] {
+        osg::ref_ptr<osg::Geometry> q = new osg::Geometry;
+        osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+        for (const osg::Vec3& p : {osg::Vec3(-1, 0, 0), osg::Vec3(1, 0, 0), osg::Vec3(1, 0, 2), osg::Vec3(-1, 0, 2)})
+            v->push_back(p);
+        q->setVertexArray(v.get());
+        q->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, 4));
+        osg::ref_ptr<osg::Geode> g = new osg::Geode;
+        g->addDrawable(q.get());
+        return g;
+    };
+    struct Case
+    {
+        const char* name;
+        bool closed;
+        bool cullOn;
+        int cullFace;  // -1: none set, else osg::CullFace::Mode
+        int frontFace; // -1: none set, else osg::FrontFace::Mode
+        bool mirrored;
+        bool expected;
+    };
+    const int back = osg::CullFace::BACK, front = osg::CullFace::FRONT, both = osg::CullFace::FRONT_AND_BACK;
+    const int cw = osg::FrontFace::CLOCKWISE, ccw = osg::FrontFace::COUNTER_CLOCKWISE;
+    for (const Case& c :
+         {Case{"no culling", false, false, -1, -1, false, false},
+          Case{"a CullFace without GL_CULL_FACE", false, false, both, -1, false, false},
+          Case{"open, BACK", false, true, -1, -1, false, true}, Case{"closed, BACK", true, true, -1, -1, false, false},
+          Case{"closed, BACK, set explicitly", true, true, back, ccw, false, false},
+          Case{"closed, FRONT", true, true, front, -1, false, true},
+          Case{"closed, FRONT_AND_BACK", true, true, both, -1, false, true},
+          Case{"closed, BACK, FrontFace CLOCKWISE", true, true, back, cw, false, true},
+          Case{"closed, FRONT, FrontFace CLOCKWISE", true, true, front, cw, false, false},
+          Case{"closed, BACK, mirrored", true, true, back, -1, true, true},
+          Case{"closed, FRONT, mirrored", true, true, front, -1, true, false},
+          Case{"closed, BACK, CLOCKWISE, mirrored", true, true, back, cw, true, false}})
+    {
+        SCOPED_TRACE(c.name);
+        osg::ref_ptr<osg::MatrixTransform> t =
+            new osg::MatrixTransform(c.mirrored ? osg::Matrixd::scale(-1, 1, 1) : osg::Matrixd::identity());
+        t->addChild(c.closed ? closedBox().get() : openQuad().get());
+        osg::StateSet* ss = t->getOrCreateStateSet();
+        if (c.cullOn) ss->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+        if (c.cullFace >= 0) ss->setAttribute(new osg::CullFace(osg::CullFace::Mode(c.cullFace)));
+        if (c.frontFace >= 0) ss->setAttribute(new osg::FrontFace(osg::FrontFace::Mode(c.frontFace)));
+        EXPECT_EQ(collect(*t), c.expected);
+    }
+}
+
+// OVERRIDE on a parent beats the drawable's value unless that is PROTECTED, for the mode
+// and for both attributes.
+TEST(SeeThrough, FaceCullingOverrideAndProtected)
+{
+    osg::ref_ptr<osg::Group> scene = new osg::Group, parent = new osg::Group;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    osg::ref_ptr<osg::Geometry> box = osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1));
+    geode->addDrawable(box.get());
+    parent->addChild(geode.get());
+    scene->addChild(parent.get());
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    const auto marked = [&] {
+        const std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+        return casters.size() == 1 && casters[0].seeThrough;
+    };
+    osg::StateSet* child = box->getOrCreateStateSet();
+    osg::StateSet* above = parent->getOrCreateStateSet();
+    child->setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT));
+    EXPECT_TRUE(marked()) << "the drawable culls the outside of a closed box";
+    above->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    EXPECT_FALSE(marked()) << "the parent's OFF | OVERRIDE";
+    child->setMode(GL_CULL_FACE, osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    EXPECT_TRUE(marked()) << "the drawable's ON | PROTECTED";
+
+    above->setAttribute(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::OVERRIDE);
+    EXPECT_FALSE(marked()) << "the parent's CullFace BACK | OVERRIDE";
+    child->setAttribute(new osg::CullFace(osg::CullFace::FRONT), osg::StateAttribute::PROTECTED);
+    EXPECT_TRUE(marked()) << "the drawable's CullFace FRONT | PROTECTED";
+
+    child->setAttribute(new osg::CullFace(osg::CullFace::BACK));
+    above->removeAttribute(osg::StateAttribute::CULLFACE);
+    EXPECT_FALSE(marked());
+    above->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE), osg::StateAttribute::OVERRIDE);
+    child->setAttribute(new osg::FrontFace(osg::FrontFace::COUNTER_CLOCKWISE));
+    EXPECT_TRUE(marked()) << "the parent's FrontFace CLOCKWISE | OVERRIDE";
+    child->setAttribute(new osg::FrontFace(osg::FrontFace::COUNTER_CLOCKWISE), osg::StateAttribute::PROTECTED);
+    EXPECT_FALSE(marked()) << "the drawable's FrontFace COUNTER_CLOCKWISE | PROTECTED";
+}
+
+// The windings the eye pass culls, as GL names them from CullFace and FrontFace (the
+// rasterizer applies a mirroring matrix to the volumes as to the caster, so it is not in
+// them): ShadowVolumeGroup draws the light caps of such a caster apart.
+TEST(SeeThrough, CulledWindings)
+{
+    struct Case
+    {
+        bool cullOn;
+        int cullFace;  // -1: none set
+        int frontFace; // -1: none set
+        bool mirrored;
+        unsigned char expected;
+    };
+    const unsigned char ccw = Caster::CULLS_CCW, cw = Caster::CULLS_CW;
+    for (const Case& c : {Case{false, osg::CullFace::FRONT, -1, false, 0}, Case{true, -1, -1, false, cw},
+                          Case{true, osg::CullFace::FRONT, -1, false, ccw},
+                          Case{true, osg::CullFace::FRONT_AND_BACK, -1, false, (unsigned char)(ccw | cw)},
+                          Case{true, osg::CullFace::BACK, osg::FrontFace::CLOCKWISE, false, ccw},
+                          Case{true, osg::CullFace::FRONT, osg::FrontFace::CLOCKWISE, false, cw},
+                          Case{true, osg::CullFace::BACK, -1, true, cw}})
+    {
+        osg::ref_ptr<osg::Group> scene = new osg::Group;
+        osg::ref_ptr<osg::MatrixTransform> t =
+            new osg::MatrixTransform(c.mirrored ? osg::Matrixd::scale(-1, 1, 1) : osg::Matrixd::identity());
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(osshar::makeBox(osg::Vec3(0, 0, 1), osg::Vec3(1, 1, 1)).get());
+        t->addChild(geode.get());
+        scene->addChild(t.get());
+        osg::StateSet* ss = t->getOrCreateStateSet();
+        if (c.cullOn) ss->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+        if (c.cullFace >= 0) ss->setAttribute(new osg::CullFace(osg::CullFace::Mode(c.cullFace)));
+        if (c.frontFace >= 0) ss->setAttribute(new osg::FrontFace(osg::FrontFace::Mode(c.frontFace)));
+        osg::ref_ptr<MeshCache> cache = new MeshCache;
+        const std::vector<Caster> casters = collectCasters(*scene, ~0u, *cache);
+        ASSERT_EQ(casters.size(), 1u);
+        EXPECT_EQ(int(casters[0].culledWindings), int(c.expected))
+            << "cull " << c.cullOn << " " << c.cullFace << " front " << c.frontFace << " mirrored " << c.mirrored;
+    }
 }

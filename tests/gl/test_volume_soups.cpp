@@ -3,6 +3,7 @@
 // non-manifold casters, back-to-back faces, a flipped face, a T-junction with a crack, boxes
 // touching face to face, and a closed box wound inward (a room) with the camera inside it.
 #include "GLTestSupport.h"
+#include "Meshes.h"
 #include "cpu/test_soups.h"
 
 #include <osg/Geode>
@@ -122,4 +123,49 @@ TEST(VolumeSoups, InsideARoomWoundInward)
     o.center = osg::Vec3d(-1, 1, 1);
     EXPECT_LT(wrongPct(o, "volume"), 0.01);
     EXPECT_LT(wrongPct(o, "hybrid"), 0.01);
+}
+
+// A caster under a mirroring transform: its volume, drawn with the caster's matrix, is
+// turned inside out in the window, and its counts were negative: -1 cancelled another
+// caster's +1 where their shadows overlap, and that ground showed lit. A mirrored open quad
+// under a box, and a mirrored closed box under an open quad, lit from above.
+TEST(VolumeSoups, MirroredCastersCountAsTheOthers)
+{
+    const auto geodeOf = [](osg::Geometry* g) {
+        osg::ref_ptr<osg::Geode> node = new osg::Geode;
+        node->addDrawable(g);
+        return node;
+    };
+    const auto mirrored = [](osg::Node* node, float cx) {
+        osg::ref_ptr<osg::MatrixTransform> m = new osg::MatrixTransform(
+            osg::Matrixd::translate(-cx, 0, 0) * osg::Matrixd::scale(-1, 1, 1) * osg::Matrixd::translate(cx, 0, 0));
+        m->addChild(node);
+        return m;
+    };
+    osshar::PreparedScene s;
+    s.content = new osg::Group;
+    s.content->addChild(geodeOf(osshar::makeGround(0, 0, 24).get()));
+    const std::vector<Triangle> quad = {{{-2, -2, 2}, {2, -2, 2}, {2, 2, 2}}, {{-2, -2, 2}, {2, 2, 2}, {-2, 2, 2}}};
+    s.content->addChild(mirrored(geodeOf(soupGeometry(quad, "quad").get()).get(), 0));
+    s.content->addChild(geodeOf(osshar::makeBox(osg::Vec3(0.5f, 0.5f, 4), osg::Vec3(1, 1, 1)).get()));
+    s.content->addChild(mirrored(geodeOf(osshar::makeBox(osg::Vec3(5, 0, 1), osg::Vec3(2, 2, 2)).get()).get(), 5));
+    osg::ref_ptr<osg::MatrixTransform> above = new osg::MatrixTransform(osg::Matrixd::translate(5.5f, 0.5f, 2));
+    above->addChild(geodeOf(soupGeometry(quad, "quad above the box").get()).get());
+    s.content->addChild(above.get());
+    s.content->addChild(osshar::makeLight(osg::Vec4(0.1f, 0.2f, 1.0f, 0.0f), 0));
+    s.lights = osshar::findLights(s.content.get());
+    s.view.eye = osg::Vec3d(2, -12, 12);
+    s.view.center = osg::Vec3d(2, 0, 0);
+    for (const char* mode : {"volume", "hybrid"})
+    {
+        ShadowedRender r(s, mode, 512, 1024, 768);
+        ASSERT_TRUE(r.valid());
+        if (std::string(mode) == "hybrid")
+            r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+        const ossref::Comparison c = ossref::compareMasks(r.mask(), r.reference());
+        ASSERT_TRUE(c.valid) << c.error;
+        std::cout << mode << ": " << c.wrongPixels << " wrong pixels of " << c.geometryPixels << " (" << c.wrongPct
+                  << "%)\n";
+        EXPECT_LT(c.wrongPct, 0.01) << mode;
+    }
 }

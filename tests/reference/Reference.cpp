@@ -7,7 +7,9 @@
 #include <osg/Billboard>
 #include <osg/BoundingBox>
 #include <osg/Camera>
+#include <osg/CullFace>
 #include <osg/CullingSet>
+#include <osg/FrontFace>
 #include <osg/Geometry>
 #include <osg/LOD>
 #include <osg/Material>
@@ -126,20 +128,30 @@ struct StateSlot
     bool on() const { return set && (value & osg::StateAttribute::ON); }
 };
 
-/** The state that decides whether a fragment survives the alpha test. */
-struct CutoutState
+/** The state that decides which fragments of a triangle the eye pass keeps: the alpha test
+ *  and face culling. */
+struct FragmentState
 {
     StateSlot alphaTest; // GL_ALPHA_TEST
     StateSlot alphaFunc;
     StateSlot material;
     StateSlot texture;   // unit 0
     StateSlot texture2D; // GL_TEXTURE_2D on unit 0
+    StateSlot cullFaceMode; // GL_CULL_FACE
+    StateSlot cullFace;     // osg::CullFace
+    StateSlot frontFace;    // osg::FrontFace
 
     void apply(const osg::StateSet& stateSet)
     {
         const osg::StateSet::ModeList& modes = stateSet.getModeList();
         const auto alphaTestMode = modes.find(GL_ALPHA_TEST);
         if (alphaTestMode != modes.end()) alphaTest.push(nullptr, alphaTestMode->second);
+        const auto cullFaceModeValue = modes.find(GL_CULL_FACE);
+        if (cullFaceModeValue != modes.end()) cullFaceMode.push(nullptr, cullFaceModeValue->second);
+        if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::CULLFACE))
+            cullFace.push(p->first.get(), p->second);
+        if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::FRONTFACE))
+            frontFace.push(p->first.get(), p->second);
         if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::ALPHAFUNC))
             alphaFunc.push(p->first.get(), p->second);
         if (const osg::StateSet::RefAttributePair* p = stateSet.getAttributePair(osg::StateAttribute::MATERIAL))
@@ -153,6 +165,20 @@ struct CutoutState
             const auto texture2DMode = textureModes[0].find(GL_TEXTURE_2D);
             if (texture2DMode != textureModes[0].end()) texture2D.push(nullptr, texture2DMode->second);
         }
+    }
+
+    /** The CulledSide of the triangles drawn in this state (OpenGL's defaults where nothing
+     *  is set: culling off, CullFace BACK, FrontFace COUNTER_CLOCKWISE). */
+    uint8_t culledSide() const
+    {
+        if (!cullFaceMode.on()) return CULL_NONE;
+        const osg::CullFace* cull = dynamic_cast<const osg::CullFace*>(cullFace.attribute);
+        const osg::FrontFace* front = dynamic_cast<const osg::FrontFace*>(frontFace.attribute);
+        const bool ccwIsFront = !front || front->getMode() != osg::FrontFace::CLOCKWISE;
+        const osg::CullFace::Mode mode = cull ? cull->getMode() : osg::CullFace::BACK;
+        if (mode == osg::CullFace::FRONT_AND_BACK) return CULL_BOTH_SIDES;
+        const bool cullsFront = mode == osg::CullFace::FRONT;
+        return cullsFront == ccwIsFront ? CULL_CCW_SIDE : CULL_CW_SIDE;
     }
 };
 
@@ -236,6 +262,12 @@ public:
         _out.vertices.push_back(b);
         _out.vertices.push_back(c);
         _out.casts.push_back(_casts ? 1 : 0);
+        // As cut-outs: the per-triangle table exists from the first culled triangle on.
+        if (_culled != CULL_NONE || !_out.culled.empty())
+        {
+            _out.culled.resize(_out.casts.size() - 1, CULL_NONE);
+            _out.culled.push_back(_culled);
+        }
         // The per-triangle table exists from the first cut-out on: opaque scenes carry none.
         if (_cutout >= 0 || !_out.cutout.empty())
         {
@@ -258,7 +290,7 @@ private:
     void inScope(const osg::Node& node, F&& body)
     {
         const bool saved = _casts;
-        const CutoutState savedState = _state;
+        const FragmentState savedState = _state;
         _casts = _casts && (node.getNodeMask() & _castsMask) != 0;
         if (const osg::StateSet* stateSet = node.getStateSet()) _state.apply(*stateSet);
         body();
@@ -315,21 +347,25 @@ private:
                           texCoords->size() < vertices.size()))
             texCoords = nullptr;
         _cutout = currentCutout(texCoords != nullptr);
+        _culled = _state.culledSide();
         osg::TriangleIndexFunctor<IndexSink> functor;
         functor.collector = this;
         functor.vertices = &vertices;
         functor.texCoords = _cutout >= 0 ? texCoords : nullptr;
         geometry.accept(functor);
         _cutout = -1;
+        _culled = CULL_NONE;
     }
 
     void addDrawable(const osg::Drawable& drawable)
     {
         _cutout = currentCutout(false);
+        _culled = _state.culledSide();
         osg::TriangleFunctor<VertexSink> functor;
         functor.collector = this;
         drawable.accept(functor);
         _cutout = -1;
+        _culled = CULL_NONE;
     }
 
     osg::Vec3d eyeInLocal() const { return _camera->eye * osg::Matrixd::inverse(_matrix); }
@@ -356,8 +392,9 @@ private:
     const Camera* _camera;
     osg::Matrixd _matrix;
     bool _casts = true;
-    CutoutState _state;
-    int _cutout = -1; // of the drawable being collected
+    FragmentState _state;
+    int _cutout = -1;            // of the drawable being collected
+    uint8_t _culled = CULL_NONE; // of the drawable being collected
     std::map<std::tuple<const osg::Image*, int, int, bool, int, float, float>, int> _cutoutIndex;
 };
 
@@ -667,29 +704,58 @@ struct CutoutTriangle
     unsigned int cutout; // index into CutoutGeometry::cutouts
 };
 
-/** The user data of an Embree geometry of cut-out triangles, indexed by primID. */
-struct CutoutGeometry
+/** The user data of an Embree geometry whose hits are filtered, indexed by primID: the
+ *  alpha tests of cut-out triangles, and in the primary scene the culled sides. */
+struct FilteredGeometry
 {
-    const std::vector<PreparedCutout>* cutouts = nullptr;
-    std::vector<CutoutTriangle> triangles;
+    const std::vector<PreparedCutout>* cutouts = nullptr; // null: no cut-outs
+    std::vector<CutoutTriangle> triangles;                // per primID, with cut-outs
+    std::vector<uint8_t> culled;                          // per primID CulledSide; empty: none
+    const osg::Vec3d* normals = nullptr;                  // per primID, with culled: unit winding normal
 };
 
-/** Intersection and occlusion filter of the cut-out geometries: rejects the hits whose
- *  fragment the alpha test discards. Reads only; safe from several threads. */
+/** Whether the alpha test keeps the fragment of hit i. */
+bool keepsFragment(const FilteredGeometry& geometry, const RTCFilterFunctionNArguments* args, unsigned int i)
+{
+    const unsigned int prim = RTCHitN_primID(args->hit, args->N, i);
+    if (!geometry.cutouts || prim >= geometry.triangles.size()) return true;
+    const float u = RTCHitN_u(args->hit, args->N, i);
+    const float v = RTCHitN_v(args->hit, args->N, i);
+    const CutoutTriangle& t = geometry.triangles[prim];
+    const osg::Vec2f tc = t.texCoords[0] * (1.0f - u - v) + t.texCoords[1] * u + t.texCoords[2] * v;
+    return (*geometry.cutouts)[t.cutout].keeps(tc);
+}
+
+/** Whether hit i is on a side of its triangle that the eye pass draws: the ray sees the CCW
+ *  side when it runs against the winding's normal. */
+bool drawnSide(const FilteredGeometry& geometry, const RTCFilterFunctionNArguments* args, unsigned int i)
+{
+    const unsigned int prim = RTCHitN_primID(args->hit, args->N, i);
+    if (prim >= geometry.culled.size() || geometry.culled[prim] == CULL_NONE) return true;
+    RTCRayN* ray = args->ray;
+    const osg::Vec3d dir(RTCRayN_dir_x(ray, args->N, i), RTCRayN_dir_y(ray, args->N, i),
+                         RTCRayN_dir_z(ray, args->N, i));
+    const uint8_t seen = dir * geometry.normals[prim] < 0.0 ? CULL_CCW_SIDE : CULL_CW_SIDE;
+    return (geometry.culled[prim] & seen) == 0;
+}
+
+/** Occlusion filter of the cut-out geometries (shadow rays, two-sided): rejects the hits
+ *  whose fragment the alpha test discards. Reads only; safe from several threads. */
 void cutoutFilter(const RTCFilterFunctionNArguments* args)
 {
-    const CutoutGeometry& geometry = *static_cast<const CutoutGeometry*>(args->geometryUserPtr);
+    const FilteredGeometry& geometry = *static_cast<const FilteredGeometry*>(args->geometryUserPtr);
     for (unsigned int i = 0; i < args->N; ++i)
-    {
-        if (args->valid[i] == 0) continue;
-        const unsigned int prim = RTCHitN_primID(args->hit, args->N, i);
-        if (prim >= geometry.triangles.size()) continue;
-        const float u = RTCHitN_u(args->hit, args->N, i);
-        const float v = RTCHitN_v(args->hit, args->N, i);
-        const CutoutTriangle& t = geometry.triangles[prim];
-        const osg::Vec2f tc = t.texCoords[0] * (1.0f - u - v) + t.texCoords[1] * u + t.texCoords[2] * v;
-        if (!(*geometry.cutouts)[t.cutout].keeps(tc)) args->valid[i] = 0;
-    }
+        if (args->valid[i] != 0 && !keepsFragment(geometry, args, i)) args->valid[i] = 0;
+}
+
+/** Intersection filter of the primary scene's geometries (the camera's rays): rejects the
+ *  hits on a culled side and those whose fragment the alpha test discards. Reads only. */
+void primaryFilter(const RTCFilterFunctionNArguments* args)
+{
+    const FilteredGeometry& geometry = *static_cast<const FilteredGeometry*>(args->geometryUserPtr);
+    for (unsigned int i = 0; i < args->N; ++i)
+        if (args->valid[i] != 0 && !(drawnSide(geometry, args, i) && keepsFragment(geometry, args, i)))
+            args->valid[i] = 0;
 }
 
 /** Embree geometry IDs of a scene: opaque triangles, then cut-outs. */
@@ -722,16 +788,17 @@ struct Tracer::Impl
 {
     RTCDevice device = nullptr;
     RTCScene primary = nullptr;
-    RTCScene shadow = nullptr;  // == primary when every visible triangle casts
-    // Per primary triangle, opaque ones first and then cut-outs (the order of the primary
-    // scene's geometries): (geomID, primID) is triangle primID + firstPrim[geomID].
+    RTCScene shadow = nullptr; // == primary when every triangle casts and is in the primary
+    // Per primary triangle (those not culled on both sides), opaque ones first and then
+    // cut-outs (the order of the primary scene's geometries): (geomID, primID) is triangle
+    // primID + firstPrim[geomID].
     std::vector<osg::Vec3d> normals; // unit length
     unsigned int firstPrim[2] = {0, 0};
     osg::Vec3d centre;
     double radius = 0.0;
     std::vector<PreparedCutout> cutouts; // TriangleSoup::cutouts
-    CutoutGeometry primaryCutouts;
-    CutoutGeometry shadowCutouts;
+    FilteredGeometry primaryGeometries[2]; // by geomID
+    FilteredGeometry shadowGeometries[2];
 
     ~Impl()
     {
@@ -741,10 +808,10 @@ struct Tracer::Impl
     }
 
     void build(const TriangleSoup& soup);
-    RTCScene makeScene(const TriangleSoup& soup, bool castersOnly, CutoutGeometry& cutoutGeometry);
+    RTCScene makeScene(const TriangleSoup& soup, bool primaryScene, FilteredGeometry* filtered);
     template <class Keep>
-    void attachTriangles(RTCScene scene, const TriangleSoup& soup, unsigned int geomID, Keep&& keep,
-                         CutoutGeometry* cutoutGeometry);
+    void attachTriangles(RTCScene scene, const TriangleSoup& soup, unsigned int geomID, Keep&& keep, bool primaryScene,
+                         FilteredGeometry& filtered);
     std::vector<osg::Vec3d> origins;  // per primary triangle, its first vertex (recentred): a point of its plane
     double offsetScale = DEFAULT_OFFSET_SCALE;
 
@@ -783,8 +850,10 @@ void Tracer::Impl::build(const TriangleSoup& soup)
     device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("ossref: cannot create an Embree device");
     rtcSetDeviceErrorFunction(device, reportEmbreeError, nullptr);
-    if (!soup.cutouts.empty() && !rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
-        throw std::runtime_error("ossref: Embree was built without filter functions, needed by alpha-tested triangles");
+    if ((!soup.cutouts.empty() || !soup.culled.empty()) &&
+        !rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+        throw std::runtime_error(
+            "ossref: Embree was built without filter functions, needed by alpha-tested and culled triangles");
 
     // Images shared by several cut-outs are read once.
     std::map<const osg::Image*, std::shared_ptr<const std::vector<float>>> alphas;
@@ -801,10 +870,7 @@ void Tracer::Impl::build(const TriangleSoup& soup)
         cutouts.emplace_back(c, texels);
     }
 
-    primary = makeScene(soup, false, primaryCutouts);
-    const bool allCast = std::all_of(soup.casts.begin(), soup.casts.end(), [](uint8_t c) { return c != 0; });
-    shadow = allCast ? primary : makeScene(soup, true, shadowCutouts);
-
+    // The normals first: the primary scene's filters read them.
     normals.reserve(soup.size());
     origins.reserve(soup.size());
     for (const bool cut : {false, true})
@@ -812,7 +878,7 @@ void Tracer::Impl::build(const TriangleSoup& soup)
         firstPrim[cut ? CUTOUT_GEOMETRY : OPAQUE_GEOMETRY] = unsigned(normals.size());
         for (size_t t = 0; t < soup.size(); ++t)
         {
-            if ((soup.cutoutOf(t) >= 0) != cut) continue;
+            if ((soup.cutoutOf(t) >= 0) != cut || soup.culledOf(t) == CULL_BOTH_SIDES) continue;
             const osg::Vec3d* v = &soup.vertices[3 * t];
             osg::Vec3d n = (v[1] - v[0]) ^ (v[2] - v[0]);
             n.normalize();
@@ -821,26 +887,46 @@ void Tracer::Impl::build(const TriangleSoup& soup)
         }
         if (soup.cutout.empty()) break; // no cut-outs
     }
+
+    primary = makeScene(soup, true, primaryGeometries);
+    const bool allCast = std::all_of(soup.casts.begin(), soup.casts.end(), [](uint8_t c) { return c != 0; });
+    const bool allInPrimary =
+        std::none_of(soup.culled.begin(), soup.culled.end(), [](uint8_t c) { return c == CULL_BOTH_SIDES; });
+    shadow = allCast && allInPrimary ? primary : makeScene(soup, false, shadowGeometries);
 }
 
 /** Attaches, as geometry `geomID`, the soup's triangles for which keep(t) holds, in soup
- *  order. With `cutoutGeometry`, they are cut-outs: the geometry filters its hits. */
+ *  order. The geometry filters its hits through `filtered` when they are cut-outs
+ *  (CUTOUT_GEOMETRY) or, in the primary scene, when some of them are culled. */
 template <class Keep>
 void Tracer::Impl::attachTriangles(RTCScene scene, const TriangleSoup& soup, unsigned int geomID, Keep&& keep,
-                                   CutoutGeometry* cutoutGeometry)
+                                   bool primaryScene, FilteredGeometry& filtered)
 {
     size_t count = 0;
-    for (size_t t = 0; t < soup.size(); ++t) count += keep(t) ? 1 : 0;
+    bool anyCulled = false;
+    for (size_t t = 0; t < soup.size(); ++t)
+        if (keep(t))
+        {
+            ++count;
+            anyCulled = anyCulled || soup.culledOf(t) != CULL_NONE;
+        }
     if (count == 0) return;
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     float* vb = static_cast<float*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
     unsigned* ib = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
-    if (cutoutGeometry)
+    const bool cut = geomID == CUTOUT_GEOMETRY;
+    const bool cull = primaryScene && anyCulled; // shadow rays see both sides
+    if (cut)
     {
-        cutoutGeometry->cutouts = &cutouts;
-        cutoutGeometry->triangles.reserve(count);
+        filtered.cutouts = &cutouts;
+        filtered.triangles.reserve(count);
+    }
+    if (cull)
+    {
+        filtered.culled.reserve(count);
+        filtered.normals = normals.data() + firstPrim[geomID];
     }
     size_t k = 0;
     size_t cutoutOrdinal = 0; // of triangle t among the soup's cut-outs: its texCoords
@@ -857,40 +943,43 @@ void Tracer::Impl::attachTriangles(RTCScene scene, const TriangleSoup& soup, uns
             vb[9 * k + 3 * i + 2] = float(v.z());
             ib[3 * k + i] = unsigned(3 * k + i);
         }
-        if (cutoutGeometry)
+        if (cut)
         {
             CutoutTriangle triangle;
             for (int i = 0; i < 3; ++i)
                 triangle.texCoords[i] =
                     3 * ordinal + i < soup.texCoords.size() ? soup.texCoords[3 * ordinal + i] : osg::Vec2f();
             triangle.cutout = unsigned(cutout);
-            cutoutGeometry->triangles.push_back(triangle);
+            filtered.triangles.push_back(triangle);
         }
+        if (cull) filtered.culled.push_back(soup.culledOf(t));
         ++k;
     }
-    if (cutoutGeometry)
-    {
-        rtcSetGeometryUserData(geometry, cutoutGeometry);
-        rtcSetGeometryIntersectFilterFunction(geometry, cutoutFilter);
-        rtcSetGeometryOccludedFilterFunction(geometry, cutoutFilter);
-    }
+    if (cut || cull) rtcSetGeometryUserData(geometry, &filtered);
+    if (primaryScene && (cut || cull)) rtcSetGeometryIntersectFilterFunction(geometry, primaryFilter);
+    if (cut) rtcSetGeometryOccludedFilterFunction(geometry, cutoutFilter);
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene, geometry, geomID);
     rtcReleaseGeometry(geometry);
 }
 
-RTCScene Tracer::Impl::makeScene(const TriangleSoup& soup, bool castersOnly, CutoutGeometry& cutoutGeometry)
+/** The primary scene (`primaryScene`: the triangles a camera can see, those culled on both
+ *  sides left out) or the casters-only shadow scene. */
+RTCScene Tracer::Impl::makeScene(const TriangleSoup& soup, bool primaryScene, FilteredGeometry* filtered)
 {
     RTCScene scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
-    const auto inScene = [&](size_t t) { return !castersOnly || soup.casts[t] != 0; };
+    const auto inScene = [&](size_t t) {
+        return primaryScene ? soup.culledOf(t) != CULL_BOTH_SIDES : soup.casts[t] != 0;
+    };
     attachTriangles(
-        scene, soup, OPAQUE_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) < 0; }, nullptr);
+        scene, soup, OPAQUE_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) < 0; }, primaryScene,
+        filtered[OPAQUE_GEOMETRY]);
     if (!soup.cutout.empty())
         attachTriangles(
-            scene, soup, CUTOUT_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) >= 0; },
-            &cutoutGeometry);
+            scene, soup, CUTOUT_GEOMETRY, [&](size_t t) { return inScene(t) && soup.cutoutOf(t) >= 0; }, primaryScene,
+            filtered[CUTOUT_GEOMETRY]);
     rtcCommitScene(scene);
     return scene;
 }

@@ -190,8 +190,19 @@ struct AlphaCutout
     float alphaScale = 1.0f; ///< front diffuse alpha of the osg::Material (1 without), in [0, 1]
 };
 
+/** The sides of a triangle that the eye pass culls (GL_CULL_FACE), named by the winding
+ *  of its vertices as collected, in world coordinates: the CCW side is the one from which
+ *  they run counter-clockwise, the side that (v1 - v0) x (v2 - v0) points to. A bit mask. */
+enum CulledSide : uint8_t
+{
+    CULL_NONE = 0,
+    CULL_CCW_SIDE = 1,
+    CULL_CW_SIDE = 2,
+    CULL_BOTH_SIDES = 3
+};
+
 /** World-space triangles of a scene, as the reference sees them. Cut-outs are described by
- *  the last three fields; a scene without them leaves all three empty. */
+ *  cutout, texCoords and cutouts; a scene without them leaves all three empty. */
 struct TriangleSoup
 {
     std::vector<osg::Vec3d> vertices;  ///< three per triangle, world coordinates
@@ -205,9 +216,13 @@ struct TriangleSoup
      *  cut-out has no image. */
     std::vector<osg::Vec2f> texCoords;
     std::vector<AlphaCutout> cutouts; ///< the distinct alpha tests of the scene
+    /** Per triangle: the CulledSide the eye pass culls. Empty when no triangle is culled
+     *  (read it through culledOf()). */
+    std::vector<uint8_t> culled;
 
     size_t size() const { return casts.size(); }
     int cutoutOf(size_t triangle) const { return cutout.empty() ? -1 : cutout[triangle]; }
+    uint8_t culledOf(size_t triangle) const { return culled.empty() ? uint8_t(CULL_NONE) : culled[triangle]; }
 };
 
 /** Every triangle of every drawable under `scene`, in world coordinates (matrices of
@@ -232,7 +247,14 @@ struct TriangleSoup
  *  does), lighting (the Material's alpha is used with lighting on or off), mipmaps and the
  *  min filter (level 0 through the mag filter), border colours, other texture types and
  *  units, shaders that discard fragments themselves. A cut-out whose alpha cannot vary
- *  and passes (no texture, or func ALWAYS) is stored as opaque. */
+ *  and passes (no texture, or func ALWAYS) is stored as opaque.
+ *
+ *  Face culling: GL_CULL_FACE, the osg::CullFace and the osg::FrontFace are accumulated by
+ *  the same rules, from OpenGL's defaults (culling off, BACK, COUNTER_CLOCKWISE). With
+ *  GL_CULL_FACE ON a triangle records in `culled` the side the CullFace's mode culls: BACK
+ *  the side from which its front face (FrontFace) is not seen, FRONT the other, and
+ *  FRONT_AND_BACK both. The winding is the world-space one, so a mirroring transform turns
+ *  the culled side over as it does in GL. */
 TriangleSoup collectTriangles(const osg::Node& scene, unsigned int castsMask = ~0u,
                               unsigned int traversalMask = ~0u);
 
@@ -248,9 +270,13 @@ TriangleSoup collectTriangles(const osg::Node& scene, const Camera* camera, unsi
  *  for several cameras and lights. Cut-out triangles (TriangleSoup::cutouts) go into an
  *  Embree geometry of their own whose intersection and occlusion filters sample the alpha
  *  test at each hit, so that primary and shadow rays pass through the fragments the
- *  rasterizer discards. render() is const and may be called from several threads. Throws
- *  std::runtime_error if Embree cannot be initialised, or if the soup has cut-outs and
- *  Embree was built without filter functions. Measured on two cores: 100k triangles
+ *  rasterizer discards. Culled sides (TriangleSoup::culled) are seen through by the primary
+ *  rays alone (an intersection filter; triangles culled on both sides are left out of the
+ *  primary scene): the eye pass honours the model's face culling, while the technique's
+ *  light passes draw the casters with culling off, so shadow rays stay two-sided.
+ *  render() is const and may be called from several threads. Throws
+ *  std::runtime_error if Embree cannot be initialised, or if the soup has cut-outs or
+ *  culled triangles and Embree was built without filter functions. Measured on two cores: 100k triangles
  *  build in ~0.1 s and render 1024x768 in ~0.2-0.4 s; 1M triangles build in ~1 s. */
 class Tracer
 {
@@ -276,6 +302,7 @@ public:
     void setOffsetScale(double scale);
     double getOffsetScale() const;
 
+    /** The triangles the camera's rays can hit: all but those culled on both sides. */
     size_t triangleCount() const;
 
 private:
@@ -287,8 +314,8 @@ private:
 constexpr double DEFAULT_OFFSET_SCALE = 1e-6;
 
 /** The exact reference mask of the triangles that a view through `camera` draws
- *  (collectTriangles with the camera). For each pixel one primary ray (tnear 0, no far limit);
- *  no hit -> 128. The hit is moved onto its triangle's plane in double precision (Embree's
+ *  (collectTriangles with the camera). For each pixel one primary ray (tnear 0, no far limit)
+ *  that passes through culled sides of triangles (TriangleSoup::culled); no hit -> 128. The hit is moved onto its triangle's plane in double precision (Embree's
  *  hit distance is a float). At the hit the geometric normal of the triangle, flipped to
  *  face the camera, is N; L is the normalised direction to the light. N.L <= 0 -> 0; a
  *  SPOT light whose cone excludes the point -> 0; otherwise a shadow ray toward the light
