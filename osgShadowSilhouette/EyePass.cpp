@@ -32,8 +32,12 @@ std::map<std::string, std::string> eyePassDefines(const EyePassPlan& plan)
     flag(shader::DEFINE_FILTER_PCSS, shadowMap && plan.filter == Technique::FILTER_PCSS);
     flag(shader::DEFINE_DEBUG_CLASSES, plan.debugView == Technique::DEBUG_CLASSES);
     flag(shader::DEFINE_SILHOUETTE_MAP, silhouette);
-    flag(shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, silhouette && plan.debugView == Technique::DEBUG_SILHOUETTE_PIXELS);
-    flag(shader::DEFINE_DEBUG_SILHOUETTE_MAP, silhouette && plan.debugView == Technique::DEBUG_SILHOUETTE_MAP);
+    // FILTER_SILHOUETTE reads edge distances instead of the silhouette points the overlays show.
+    const bool distances = silhouette && plan.filter == Technique::FILTER_SILHOUETTE;
+    flag(shader::DEFINE_FILTER_SILHOUETTE, distances);
+    const bool points = silhouette && !distances;
+    flag(shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, points && plan.debugView == Technique::DEBUG_SILHOUETTE_PIXELS);
+    flag(shader::DEFINE_DEBUG_SILHOUETTE_MAP, points && plan.debugView == Technique::DEBUG_SILHOUETTE_MAP);
     flag(shader::DEFINE_TRIANGLE_LISTS, lists);
     flag(shader::DEFINE_LIST_IMAGES, lists && plan.listImages);
     flag(shader::DEFINE_LIST_BLOCK_HEADS, lists && plan.listImages && plan.listBlockHeads);
@@ -56,6 +60,7 @@ const std::vector<std::string>& eyePassDefineNames()
         shader::DEFINE_COUNT_EXACT,          shader::DEFINE_BIAS_BAND,
         shader::DEFINE_HYBRID_EDGES,         shader::DEFINE_DEBUG_VISIBILITY,
         shader::DEFINE_FILTER_PCF,           shader::DEFINE_FILTER_PCSS,
+        shader::DEFINE_FILTER_SILHOUETTE,
     };
     return names;
 }

@@ -30,7 +30,8 @@ struct EyePassPlan
     unsigned int usedSlots = 0;  ///< slots 0 .. usedSlots-1 are evaluated
     unsigned int skippedSlots = 0; ///< bit s: slot s is a cube face with nothing to shadow, left out
     bool cubeFaces = false;      ///< a point light's cube faces take slots
-    /** SHADOW_MAP's filter (the other modes' eye passes ignore it). */
+    /** SHADOW_MAP's filter, or SILHOUETTE_MAP's FILTER_SILHOUETTE (the other modes' eye passes
+     *  ignore it). */
     SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2;
     unsigned int filterWindow = 1; ///< FILTER_PCF's N
 };

@@ -43,7 +43,7 @@ struct PassSettings
     SilhouetteShadowTechnique::HybridMethod hybridMethod = SilhouetteShadowTechnique::HYBRID_AUTO;
     SilhouetteShadowTechnique::DebugView debugView = SilhouetteShadowTechnique::DEBUG_NONE;
     unsigned int debugLight = 0;
-    SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2; ///< SHADOW_MAP's
+    SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2; ///< the map modes'
     unsigned int filterWindow = 1;                                                        ///< FILTER_PCF's N
     SilhouetteShadowTechnique::Tuning tuning;
     unsigned int listSlots = 1;  ///< slots that can have triangle lists
@@ -57,6 +57,8 @@ struct PassSettings
     osg::Program* volumeProgram = nullptr;
     osg::Texture2D* defaultSilhouetteTexture = nullptr;    ///< an edge mask without edges
     osg::Texture2D* defaultNeighbourhoodTexture = nullptr; ///< a neighbourhood map without edges
+    osg::StateSet* distanceMapStateSet = nullptr;          ///< FILTER_SILHOUETTE's distance maps
+    osg::Texture2D* defaultDistanceTexture = nullptr;      ///< a distance map without edges
 };
 
 /** What the passes call back in the technique. */

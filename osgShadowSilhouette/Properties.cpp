@@ -189,14 +189,18 @@ std::vector<PropertyInfo> hybridRows()
 std::vector<PropertyInfo> filterRows()
 {
     return {
-        {OSS_PROPERTY(Filter), P::ENUM, T::FILTER_PCF_2X2, T::FILTER_PCSS, 0, 2, "",
+        {OSS_PROPERTY(Filter), P::ENUM, T::FILTER_PCF_2X2, T::FILTER_PCSS, 0, 3, "",
          {{"FILTER_PCF_2X2", T::FILTER_PCF_2X2, "pcf2x2"},
           {"FILTER_PCF", T::FILTER_PCF, "pcf"},
-          {"FILTER_PCSS", T::FILTER_PCSS, "pcss"}},
-         "how SHADOW_MAP filters its depth maps: 2x2 PCF, an N x N PCF window, or PCSS soft shadows",
+          {"FILTER_PCSS", T::FILTER_PCSS, "pcss"},
+          {"FILTER_SILHOUETTE", T::FILTER_SILHOUETTE, "silhouette"}},
+         "how SHADOW_MAP filters its depth maps (2x2 PCF, an N x N PCF window, PCSS soft shadows), or "
+         "SILHOUETTE_MAP its edges (silhouette distances: anti-aliased or soft)",
          "`FILTER_PCF`: Doverspike's `FilterWindow` x `FilterWindow` window of bilinear PCF taps; "
          "`FILTER_PCSS`: a blocker search, a penumbra as wide as `LightSize` and the blockers' depth say, "
-         "and a disc of PCF taps that wide; the other modes keep their hard answer and warn once "
+         "and a disc of PCF taps that wide; `FILTER_SILHOUETTE` (SILHOUETTE_MAP): signed distances to "
+         "the silhouette edges, a disc light's penumbra across each edge; the other modes keep their hard "
+         "answer and warn once "
          "([docs/soft-shadows.md](docs/soft-shadows.md))"},
         {OSS_PROPERTY(FilterWindow), P::UINT, 3, 5, 1, shader::FILTER_WINDOW_MAX, "", {},
          "`FILTER_PCF`: the N of its N x N window of taps, one texel apart",

@@ -40,6 +40,10 @@ std::string shaderPrelude()
     s << "#if defined(OSS_SILHOUETTE_MAP) || defined(OSS_FILTER_PCF) || defined(OSS_FILTER_PCSS)\n"
          "#define OSS_SHADOW_SAMPLER sampler2D\n#else\n"
          "#define OSS_SHADOW_SAMPLER sampler2DShadow\n#endif\n";
+    // SILHOUETTE_MAP's second maps: neighbourhood maps, or edge distances under FILTER_SILHOUETTE.
+    s << "#ifdef OSS_FILTER_SILHOUETTE\n#define OSS_SILHOUETTE_SAMPLER sampler2D\n#else\n"
+         "#define OSS_SILHOUETTE_SAMPLER usampler2D\n#endif\n"
+      << "#define OSS_SILDIST_NO_EDGE " << std::scientific << shader::SILDIST_NO_EDGE << std::defaultfloat << "\n";
     return s.str();
 }
 

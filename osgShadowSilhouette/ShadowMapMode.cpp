@@ -13,7 +13,8 @@ class ShadowMapModePass : public ModePass
 public:
     bool rawDepthMaps(const PassSettings& settings) const override
     {
-        return settings.filter != SilhouetteShadowTechnique::FILTER_PCF_2X2;
+        return settings.filter == SilhouetteShadowTechnique::FILTER_PCF ||
+               settings.filter == SilhouetteShadowTechnique::FILTER_PCSS; // FILTER_SILHOUETTE is not this mode's
     }
 
     void planFrame(ModeFrame& mf) override

@@ -23,14 +23,16 @@ void SilhouetteShadowTechnique::createShadowShaders() const
     _listTermFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_TRILIST_TERM_FRAG);
     _screenVisibilityFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SCREEN_VISIBILITY_FRAG);
     _filterFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_FILTER_FRAG);
+    _silhouetteFilterFragmentShader = detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILHOUETTE_FILTER_FRAG);
 }
 
 std::vector<osg::ref_ptr<osg::Shader>> SilhouetteShadowTechnique::getShadowShaders() const
 {
     createShadowShaders();
     std::vector<osg::ref_ptr<osg::Shader>> shaders;
-    for (osg::Shader* s : {_shadowFragmentShader.get(), _silhouetteFragmentShader.get(), _listTermFragmentShader.get(),
-                           _screenVisibilityFragmentShader.get(), _filterFragmentShader.get()})
+    for (osg::Shader* s :
+         {_shadowFragmentShader.get(), _silhouetteFragmentShader.get(), _listTermFragmentShader.get(),
+          _screenVisibilityFragmentShader.get(), _filterFragmentShader.get(), _silhouetteFilterFragmentShader.get()})
         if (s) shaders.push_back(s); // a shader that cannot be found has been warned about
     return shaders;
 }

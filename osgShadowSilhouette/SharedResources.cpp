@@ -71,10 +71,13 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
     r->litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
     r->defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();
     r->defaultNeighbourhoodTexture = SilhouetteMapPass::createDefaultNeighbourhoodTexture();
+    r->distanceMapStateSet = SilhouetteMapPass::createDistanceStateSet();
+    r->defaultDistanceTexture = SilhouetteMapPass::createDefaultDistanceTexture();
 
     for (osg::Program* program : {r->volumeProgram.get(), r->prepassProgram.get()}) watchLink(program);
-    for (osg::StateSet* ss : {r->depthPassStateSet.get(), r->listStateSet.get(), r->silhouetteMapStateSet.get(),
-                              dynamic_cast<osg::StateSet*>(r->silhouetteMapStateSet->getUserData())})
+    for (osg::StateSet* ss :
+         {r->depthPassStateSet.get(), r->listStateSet.get(), r->silhouetteMapStateSet.get(),
+          r->distanceMapStateSet.get(), dynamic_cast<osg::StateSet*>(r->silhouetteMapStateSet->getUserData())})
         if (ss) watchLink(dynamic_cast<osg::Program*>(ss->getAttribute(osg::StateAttribute::PROGRAM)));
     return r;
 }

@@ -30,6 +30,8 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Texture2D> litRawDepthTexture;          ///< ... as SILHOUETTE_MAP reads it (raw depths)
     osg::ref_ptr<osg::Texture2D> defaultSilhouetteTexture;    ///< an edge mask without edges
     osg::ref_ptr<osg::Texture2D> defaultNeighbourhoodTexture; ///< a neighbourhood map without edges
+    osg::ref_ptr<osg::StateSet> distanceMapStateSet;          ///< FILTER_SILHOUETTE's distance maps
+    osg::ref_ptr<osg::Texture2D> defaultDistanceTexture;      ///< a distance map without edges
 
     /** The depth texture of a slot with nothing to shadow. */
     osg::Texture2D* litTexture(bool rawDepth) const
@@ -48,11 +50,11 @@ struct SharedResources : public osg::Referenced
         for (osg::Program* program :
              {receiverProgram.get(), stencilProgram.get(), volumeProgram.get(), prepassProgram.get()})
             op(program);
-        for (osg::StateSet* ss :
-             {depthPassStateSet.get(), silhouetteMapStateSet.get(), listStateSet.get(), listFrontOnlyStateSet.get()})
+        for (osg::StateSet* ss : {depthPassStateSet.get(), silhouetteMapStateSet.get(), listStateSet.get(),
+                                  listFrontOnlyStateSet.get(), distanceMapStateSet.get()})
             op(ss);
         for (osg::Texture2D* texture : {litDepthTexture.get(), litRawDepthTexture.get(), defaultSilhouetteTexture.get(),
-                                        defaultNeighbourhoodTexture.get()})
+                                        defaultNeighbourhoodTexture.get(), defaultDistanceTexture.get()})
             op(texture);
     }
 };

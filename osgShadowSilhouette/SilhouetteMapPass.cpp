@@ -7,6 +7,7 @@
 #include <osg/BlendEquation>
 #include <osg/GLExtensions>
 #include <osg/BlendFunc>
+#include <osg/Depth>
 #include <osg/Geode>
 #include <osg/Image>
 #include <osgUtil/CullVisitor>
@@ -121,6 +122,38 @@ osg::ref_ptr<osg::StateSet> SilhouetteMapPass::createSharedStateSet()
     return ss;
 }
 
+osg::ref_ptr<osg::StateSet> SilhouetteMapPass::createDistanceStateSet()
+{
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName("osgShadowSilhouette silhouette distance map");
+    program->addShader(detail::loadShader(osg::Shader::VERTEX, shader::FILE_SILMAP_VERT));
+    program->addShader(detail::loadShader(osg::Shader::GEOMETRY, shader::FILE_SILMAP_GEOM));
+    program->addShader(detail::loadShader(osg::Shader::FRAGMENT, shader::FILE_SILDIST_FRAG));
+    const auto overrideOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    ss->setAttributeAndModes(program.get(), overrideOn);
+    ss->setDefine(shader::DEFINE_SILMAP_DISTANCE);
+    // The nearest edge per texel wins: the fragment's depth is its distance over the width.
+    ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), overrideOn);
+    for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_BLEND), GLenum(GL_LIGHTING)})
+        ss->setMode(mode, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    return ss;
+}
+
+osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createDefaultDistanceTexture()
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(1, 1, 1, GL_RG, GL_FLOAT);
+    image->setInternalTextureFormat(GL_RG32F);
+    float* texel = reinterpret_cast<float*>(image->data());
+    texel[0] = shader::SILDIST_NO_EDGE;
+    texel[1] = 1.0f;
+    osg::ref_ptr<osg::Texture2D> t = nearestTexture(GL_RG32F, GL_RG, GL_FLOAT, osg::Texture::CLAMP_TO_BORDER);
+    t->setBorderColor(osg::Vec4d(shader::SILDIST_NO_EDGE, 1.0, 0.0, 0.0));
+    t->setImage(image.get());
+    return t;
+}
+
 osg::ref_ptr<osg::Texture2D> SilhouetteMapPass::createTexture(unsigned int size)
 {
     osg::ref_ptr<osg::Texture2D> t = silhouetteTexture();
@@ -229,6 +262,50 @@ void SilhouetteMapPass::createNeighbourhoodPass()
     c.addChild(geode.get());
 }
 
+void SilhouetteMapPass::createDistancePass(const osg::StateSet& shared)
+{
+    _distanceTexture = nearestTexture(GL_RG32F, GL_RG, GL_FLOAT, osg::Texture::CLAMP_TO_BORDER);
+    _distanceTexture->setBorderColor(osg::Vec4d(shader::SILDIST_NO_EDGE, 1.0, 0.0, 0.0));
+    _distanceTexture->setTextureSize(_mapSize, _mapSize);
+    _distanceCamera = new osg::Camera;
+    osg::Camera& c = *_distanceCamera;
+    c.setName(_camera->getName() + " distances");
+    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    c.setRenderOrder(osg::Camera::PRE_RENDER, 1); // after the depth pass
+    c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    c.setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
+    c.setCullingMode(osg::CullSettings::NO_CULLING);
+    c.setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    c.setClearColor(osg::Vec4(shader::SILDIST_NO_EDGE, 1.0f, 0.0f, 0.0f));
+    c.setClearDepth(1.0);
+    c.setStateSet(new osg::StateSet(shared, osg::CopyOp::SHALLOW_COPY));
+    _distanceWidthUniform = new osg::Uniform(shader::SILDIST_WIDTH, shader::SILDIST_MIN_WIDTH);
+    c.getStateSet()->addUniform(_distanceWidthUniform.get());
+    c.getStateSet()->addUniform(new osg::Uniform(shader::SILDIST_SIZE, osg::Vec2f(float(_mapSize), float(_mapSize))));
+    c.setViewport(0, 0, _mapSize, _mapSize);
+    c.setViewMatrix(osg::Matrixd::identity());
+    c.attach(osg::Camera::COLOR_BUFFER, _distanceTexture.get());
+    c.attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->setCullingActive(false);
+    geode->addDrawable(_edges->getLines());
+    c.addChild(geode.get());
+}
+
+void SilhouetteMapPass::cullDistanceMap(osgUtil::CullVisitor& cv, const LightFrustum& frustum,
+                                        const osg::StateSet& shared, float width, const std::vector<Caster>& casters,
+                                        const osg::Vec4d& light)
+{
+    _extractionSkipped = !_edges->update(casters, light);
+    _edges->writeLines(frustum.view);
+    if (!_distanceCamera) createDistancePass(shared);
+    _drewDistances = true;
+    _distanceWidth = width;
+    _distanceWidthUniform->set(width);
+    _distanceCamera->setProjectionMatrix(frustum.projection);
+    _distanceCamera->accept(cv);
+}
+
 SilhouetteMapPass::~SilhouetteMapPass() = default;
 
 void SilhouetteMapPass::setDepthComparison(bool compare)
@@ -259,6 +336,7 @@ void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frust
 {
     _extractionSkipped = !_edges->update(casters, light);
     _edges->writeLines(frustum.view);
+    _drewDistances = false;
     _camera->setProjectionMatrix(frustum.projection);
     osg::StateSet* ss = _camera->getStateSet();
     if (ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE) != depthTexture)
@@ -288,6 +366,8 @@ void SilhouetteMapPass::resizeGLObjectBuffers(unsigned int maxSize)
     _texture->resizeGLObjectBuffers(maxSize);
     if (_neighbourhoodCamera) _neighbourhoodCamera->resizeGLObjectBuffers(maxSize);
     if (_neighbourhoodTexture) _neighbourhoodTexture->resizeGLObjectBuffers(maxSize);
+    if (_distanceCamera) _distanceCamera->resizeGLObjectBuffers(maxSize);
+    if (_distanceTexture) _distanceTexture->resizeGLObjectBuffers(maxSize);
 }
 
 void SilhouetteMapPass::releaseGLObjects(osg::State* state) const
@@ -296,6 +376,8 @@ void SilhouetteMapPass::releaseGLObjects(osg::State* state) const
     _texture->releaseGLObjects(state);
     if (_neighbourhoodCamera) _neighbourhoodCamera->releaseGLObjects(state);
     if (_neighbourhoodTexture) _neighbourhoodTexture->releaseGLObjects(state);
+    if (_distanceCamera) _distanceCamera->releaseGLObjects(state);
+    if (_distanceTexture) _distanceTexture->releaseGLObjects(state);
 }
 
 } // namespace osgShadowSilhouette

@@ -451,10 +451,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     services.warnAlphaTested = [log = _warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
     ModeFrame mf{cv, vd, frame, stats, eye, settings, services};
     ModePass& mode = modePassFor(frame.mode);
-    if (frame.mode != SHADOW_MAP && _filter != FILTER_PCF_2X2)
-        warnOnce(detail::WARN_FILTER_MODE, "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) +
-                                               " applies to SHADOW_MAP only; mode " + modeName(frame.mode) +
-                                               " renders its own hard shadows");
+    warnFilterMode(frame.mode);
     mode.planFrame(mf);
     prepareEyePass(mf);
     cullShadowSlots(mf, mode, lights, plan);
@@ -542,7 +539,19 @@ detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) cons
     s.volumeProgram = _shared->volumeProgram.get();
     s.defaultSilhouetteTexture = _shared->defaultSilhouetteTexture.get();
     s.defaultNeighbourhoodTexture = _shared->defaultNeighbourhoodTexture.get();
+    s.distanceMapStateSet = _shared->distanceMapStateSet.get();
+    s.defaultDistanceTexture = _shared->defaultDistanceTexture.get();
     return s;
+}
+
+void SilhouetteShadowTechnique::warnFilterMode(Mode mode) const
+{
+    // FILTER_PCF and FILTER_PCSS are SHADOW_MAP's, FILTER_SILHOUETTE is SILHOUETTE_MAP's.
+    const Mode owner = _filter == FILTER_SILHOUETTE ? SILHOUETTE_MAP : SHADOW_MAP;
+    if (_filter == FILTER_PCF_2X2 || mode == owner) return;
+    warnOnce(detail::WARN_FILTER_MODE, "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) +
+                                           " applies to " + (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") +
+                                           " only; mode " + modeName(mode) + " renders its own hard shadows");
 }
 
 void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)

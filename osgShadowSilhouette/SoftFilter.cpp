@@ -119,7 +119,8 @@ double filterReachTexels(SilhouetteShadowTechnique::Filter filter, unsigned int 
     {
     case SilhouetteShadowTechnique::FILTER_PCF: return std::max(4.0, 0.5 * window + 2.0);
     case SilhouetteShadowTechnique::FILTER_PCSS: return double(shader::PCSS_MAX_RADIUS_TEXELS) + 2.0;
-    case SilhouetteShadowTechnique::FILTER_PCF_2X2: break;
+    case SilhouetteShadowTechnique::FILTER_PCF_2X2:
+    case SilhouetteShadowTechnique::FILTER_SILHOUETTE: break; // SILHOUETTE_MAP's: not read here
     }
     return 4.0;
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The soft-shadow benchmark: every mode, and SHADOW_MAP under each filter (property Filter),
+# The soft-shadow benchmark: every mode, SHADOW_MAP under each of its filters (property Filter)
+# and SILHOUETTE_MAP under FILTER_SILHOUETTE,
 # against the exact visibility of a directional light with a size (MEASURE.md, "Soft
 # shadows"), per scene and angular radius, at 512x384, with the frame time of each run. The
 # hard modes answer 0 or 1, so their vis_mae_penumbra is what a soft filter has to lower.
@@ -15,7 +16,7 @@ source scripts/bench-rounds.sh
 SCENES=${SCENES:-"default bunny cubes"}
 SIZES=${SIZES:-"0 1 3"} # angular radius of the light, degrees
 # mode:map size[:filter[:FilterWindow]]
-MODES=${MODES:-"shadowmap:2048 shadowmap:2048:pcf:5 shadowmap:2048:pcss silhouette:1024 hybrid:512 volume:0"}
+MODES=${MODES:-"shadowmap:2048 shadowmap:2048:pcf:5 shadowmap:2048:pcss silhouette:1024 silhouette:1024:silhouette silhouette:2048:silhouette hybrid:512 volume:0"}
 FRAMES=${FRAMES:-10}
 LIGHT=${LIGHT:-"1 0.6 2"} # toward the light
 W=512 H=384
@@ -30,7 +31,8 @@ for scene in $SCENES; do
       IFS=: read -r mode map filter window <<< "$entry"
       [ "$map" = 0 ] && map=512 # SHADOW_VOLUME has no map
       filter=${filter:-pcf2x2}
-      [ "$mode" = shadowmap ] || filter=none
+      # SHADOW_MAP's filters, and SILHOUETTE_MAP's own; the other modes render hard.
+      [ "$mode" = shadowmap ] || { [ "$mode" = silhouette ] && [ "$filter" = silhouette ]; } || filter=none
       label=$filter
       [ -n "$window" ] && label="$filter$window"
       log="$TMP/$scene-$size-$mode-$label.txt"

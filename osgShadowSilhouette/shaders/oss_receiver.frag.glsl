@@ -12,7 +12,7 @@
 // cuts the mask where it cuts the picture.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
-#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS, OSS_ALPHA_TEST)
+#pragma import_defines(OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS, OSS_ALPHA_TEST)
 #pragma import_defines(OSS_DEBUG_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS)
 // OSS_SKIPPED_SLOTS, bit s: slot s is a cube face with nothing to shadow (its newest build
 // drew no caster), left out: its term is 1 everywhere. The OSS_MAX_* and slot defines have
@@ -38,7 +38,12 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // compile-time constant (a define set per view), so unused slots cost nothing: shaders
 // execute both sides of a branch on SIMD rasterizers such as llvmpipe.
 // In the silhouette-map mode the term comes from oss_silhouetteTerm() (oss_silhouette.frag.glsl).
-#ifdef OSS_SILHOUETTE_MAP
+#if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
+// FILTER_SILHOUETTE: the edge distances, oss_silhouetteFilterTerm() (oss_silhouette_filter.frag.glsl).
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // distance maps (oss_sildist.frag.glsl)
+float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition);
+#define OSS_SLOT_TERM(s) oss_silhouetteFilterTerm(s, oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
+#elif defined(OSS_SILHOUETTE_MAP)
 uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)
 float oss_silhouetteTerm(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
 vec4 oss_silhouetteDebug(vec4 eyePosition);

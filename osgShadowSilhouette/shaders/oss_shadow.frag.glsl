@@ -10,7 +10,7 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
 #pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
-#pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS)
+#pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS, OSS_FILTER_SILHOUETTE)
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];   // their GL light numbers
@@ -19,8 +19,11 @@ uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];// eye space -> light texture
 uniform OSS_SHADOW_SAMPLER oss_shadowMap[OSS_MAX_SHADOW_SLOTS]; // prelude: raw depths in SILHOUETTE_MAP
 #ifdef OSS_SILHOUETTE_MAP
 // Silhouette-map mode: the term of oss_silhouette.frag.glsl, linked into the same program.
-uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)
+// Under FILTER_SILHOUETTE the second maps are the edge distances of oss_sildist.frag.glsl and the
+// term that of oss_silhouette_filter.frag.glsl.
+uniform OSS_SILHOUETTE_SAMPLER oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)
 float oss_silhouetteTerm(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeToShadow, vec4 eyePosition);
+float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition);
 #endif
 #ifdef OSS_TRIANGLE_LISTS
 // HYBRID with triangle lists: the term of oss_trilist_term.frag.glsl, linked into the same program.
@@ -108,7 +111,9 @@ float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
 #else
 #define OSS_PCF_TERM(s, p) oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], p)
 #endif
-#if defined(OSS_SILHOUETTE_MAP)
+#if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
+#define OSS_MAP_TERM(s, p) oss_silhouetteFilterTerm(s, oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#elif defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS)
 #define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p, true)
@@ -368,7 +373,10 @@ vec2 oss_silhouetteClass(sampler2D depthMap, usampler2D silhouetteMap, mat4 eyeT
 // The class of shadow slot s at an eye-space position: x the shadow term (1 lit), y 1 where
 // the mode treats the pixel as a silhouette pixel. SHADOW_MAP marks the pixels whose 2x2 PCF
 // lies strictly between 0 and 1 (those HYBRID would resolve with volumes).
-#ifdef OSS_SILHOUETTE_MAP
+#if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
+vec2 oss_termClass(float v) { return vec2(step(0.5, v), v > 0.0 && v < 1.0 ? 1.0 : 0.0); }
+#define OSS_SLOT_CLASS(s, p) oss_termClass(OSS_MAP_TERM(s, p))
+#elif defined(OSS_SILHOUETTE_MAP)
 #define OSS_SLOT_CLASS(s, p) oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS)
 vec2 oss_listClass(int s, vec4 eyePosition)

@@ -13,8 +13,20 @@
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
 
-#pragma import_defines(OSS_SILMAP_COMPARE, OSS_SILMAP_NEIGHBOURHOOD)
-#ifdef OSS_SILMAP_NEIGHBOURHOOD
+#pragma import_defines(OSS_SILMAP_COMPARE, OSS_SILMAP_NEIGHBOURHOOD, OSS_SILMAP_DISTANCE)
+#define OSS_GRID_OFFSET 0.5 // the dual grid: window coordinates are depth-texel coordinates less this
+#ifdef OSS_SILMAP_DISTANCE
+// FILTER_SILHOUETTE's distance map (oss_sildist.frag.glsl; Valient and Bujnak 2005): on the
+// depth map's own grid (texel (i, j)'s centre is depth sample (i, j)), every texel whose
+// centre lies within oss_sildistWidth texels of the edge (half a texel's diagonal more).
+uniform float oss_sildistWidth; // W, in texels
+uniform vec2 oss_sildistSize;   // the map's size in texels (the depth map's)
+#define OSS_HALF_WIDTH (oss_sildistWidth + 0.75)
+#define OSS_WINDOW_OFFSET 0.0
+#undef OSS_GRID_OFFSET
+#define OSS_GRID_OFFSET 0.0
+#define OSS_MAP_SIZE oss_sildistSize
+#elif defined(OSS_SILMAP_NEIGHBOURHOOD)
 // The neighbourhood map (oss_silnbr.frag.glsl): every texel within one texel of a texel the
 // edge touches, drawn one texel up and to the right in a map one texel larger.
 #define OSS_HALF_WIDTH 1.75
@@ -65,8 +77,8 @@ void main()
         return;
     vec2 size = OSS_MAP_SIZE;
     vec3 na = a.xyz / a.w, nb = b.xyz / b.w;
-    vec2 wa = (na.xy * 0.5 + 0.5) * size - 0.5;
-    vec2 wb = (nb.xy * 0.5 + 0.5) * size - 0.5;
+    vec2 wa = (na.xy * 0.5 + 0.5) * size - OSS_GRID_OFFSET;
+    vec2 wb = (nb.xy * 0.5 + 0.5) * size - OSS_GRID_OFFSET;
     vec4 edge = vec4(wa, wb);
     vec2 depth = vec2(na.z, nb.z) * 0.5 + 0.5;
 

@@ -114,7 +114,7 @@ TEST(EyePass, EveryDefineAPlanSetsIsOwned)
               SilhouetteShadowTechnique::HYBRID, SilhouetteShadowTechnique::SHADOW_VOLUME})
             for (SilhouetteShadowTechnique::Filter filter :
                  {SilhouetteShadowTechnique::FILTER_PCF_2X2, SilhouetteShadowTechnique::FILTER_PCF,
-                  SilhouetteShadowTechnique::FILTER_PCSS})
+                  SilhouetteShadowTechnique::FILTER_PCSS, SilhouetteShadowTechnique::FILTER_SILHOUETTE})
             {
                 p.mode = mode;
                 p.debugView = view;
@@ -149,7 +149,30 @@ TEST(EyePass, SoftFiltersInShadowMapOnly)
         const auto pcf = d.find(shader::DEFINE_FILTER_PCF);
         EXPECT_EQ(pcf == d.end() ? std::string() : pcf->second, c.pcf) << T::modeName(c.mode) << " " << c.filter;
         EXPECT_EQ(d.count(shader::DEFINE_FILTER_PCSS), c.pcss ? 1u : 0u) << T::modeName(c.mode) << " " << c.filter;
+        EXPECT_EQ(d.count(shader::DEFINE_FILTER_SILHOUETTE), 0u) << T::modeName(c.mode) << " " << c.filter;
     }
+}
+
+// FILTER_SILHOUETTE: its define in SILHOUETTE_MAP only, which then reads distances, not the
+// silhouette points its overlays show; the other modes keep their answer.
+TEST(EyePass, SilhouetteFilterInSilhouetteMapOnly)
+{
+    using T = SilhouetteShadowTechnique;
+    for (T::Mode mode : {T::SHADOW_MAP, T::SILHOUETTE_MAP, T::HYBRID, T::SHADOW_VOLUME})
+    {
+        EyePassPlan p = plan(mode);
+        p.filter = T::FILTER_SILHOUETTE;
+        p.debugView = T::DEBUG_SILHOUETTE_MAP;
+        const Defines d = eyePassDefines(p);
+        const bool silhouette = mode == T::SILHOUETTE_MAP;
+        EXPECT_EQ(d.count(shader::DEFINE_FILTER_SILHOUETTE), silhouette ? 1u : 0u) << T::modeName(mode);
+        EXPECT_EQ(d.count(shader::DEFINE_SILHOUETTE_MAP), silhouette ? 1u : 0u) << T::modeName(mode);
+        EXPECT_EQ(d.count(shader::DEFINE_DEBUG_SILHOUETTE_MAP), 0u) << T::modeName(mode);
+        EXPECT_EQ(d.count(shader::DEFINE_FILTER_PCF) + d.count(shader::DEFINE_FILTER_PCSS), 0u) << T::modeName(mode);
+    }
+    EyePassPlan p = plan(T::SILHOUETTE_MAP);
+    p.debugView = T::DEBUG_SILHOUETTE_MAP;
+    EXPECT_EQ(eyePassDefines(p).count(shader::DEFINE_DEBUG_SILHOUETTE_MAP), 1u) << "without the filter";
 }
 
 // The visibility view is the mask's pass without its threshold.

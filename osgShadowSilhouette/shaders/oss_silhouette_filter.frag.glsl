@@ -1,0 +1,92 @@
+#version 400 compatibility
+// osgShadowSilhouette: SILHOUETTE_MAP's FILTER_SILHOUETTE, eye pass (docs/soft-shadows.md).
+//
+// Valient and Bujnak 2005, "GPU friendly, anti-aliased, soft shadow mapping", section 2.2.
+// The distance map (oss_sildist.frag.glsl) holds, per depth texel, the signed distance d_E in
+// texels to the nearest silhouette edge (positive on the casting side) and the edge's depth
+// z_E. Where the four texels around the point all hold an edge in front of it (z_E < z), the
+// boundary inside the cell is the bilinear interpolation of the four distances (exact for a
+// straight edge) and the point's visibility across it:
+//   size 0:  v = clamp(0.5 - d / f, 0, 1), f the pixel's footprint across the edge (texels);
+//   sized:   v = 1 - F(d / r), r = oss_filterScale[s] (z - z_E) the penumbra's radius in
+//            texels, F(x) = (acos(-x) + x sqrt(1 - x^2)) / pi the share of a disc cut off by
+//            a line at signed distance x (the closed form of the paper's lookup texture).
+// Other casters still shadow: the result is multiplied by the depth tests of the texels on
+// the edge's outside (d_E < 0). An edge behind the point leaves it lit (the paper's rule) but
+// for those tests; so does a point on the casting side whose four depth tests all pass (a
+// caster's own face beside its rim). Where a texel holds no edge: the depth map's bilinear
+// 2x2 comparison.
+
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE)
+#if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
+#define OSS_SILDIST_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a texel
+#define OSS_PI 3.14159265358979
+
+uniform vec2 oss_filterScale[OSS_MAX_SHADOW_SLOTS]; // penumbra radius (texture space) per unit of depth
+
+float oss_lookupBias(mat4 eyeToShadow, vec4 c, vec4 p); // oss_shadow.frag.glsl
+vec2 oss_depthSlope(vec3 coord);
+
+// The share of a unit disc on the far side of a line at signed distance x from its centre.
+float oss_discCut(float x)
+{
+    x = clamp(x, -1.0, 1.0);
+    return (acos(-x) + x * sqrt(1.0 - x * x)) / OSS_PI;
+}
+
+// The visibility across an edge at signed distance d (texels; > 0 on the casting side) for
+// a penumbra of radius r and a pixel footprint f across the edge.
+float oss_edgeVisibility(float d, float r, float f)
+{
+    if (r <= 0.0)
+        return clamp(0.5 - d / f, 0.0, 1.0);
+    // A penumbra narrower than the pixel: the disc's profile as wide as the footprint's box.
+    return 1.0 - oss_discCut(d / max(r, 0.64 * f));
+}
+
+float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    vec4 c = eyeToShadow * eyePosition;
+    vec3 t = c.xyz / c.w;
+    vec2 slope = oss_depthSlope(t); // derivatives: before any branch
+    vec2 size = vec2(textureSize(depthMap, 0));
+    vec2 u = t.xy * size - 0.5;
+    vec2 ux = dFdx(u), uy = dFdy(u);
+    if (c.w <= 0.0)
+        return 1.0; // behind a perspective light: outside its map
+    t.z = min(t.z - oss_lookupBias(eyeToShadow, c, eyePosition), 1.0);
+    vec2 base = floor(u), f = u - base;
+    vec2 at = (base + 1.0) / size;
+    // textureGather's order: (0,1), (1,1), (1,0), (0,0).
+    vec4 depth = textureGather(depthMap, at, 0);
+    vec4 dx = (vec4(0.0, 1.0, 1.0, 0.0) - f.x) / size.x;
+    vec4 dy = (vec4(1.0, 1.0, 0.0, 0.0) - f.y) / size.y;
+    vec4 plane = clamp(dx * slope.x + dy * slope.y, -OSS_SILDIST_MAX_PLANE_BIAS, OSS_SILDIST_MAX_PLANE_BIAS);
+    vec4 lit = vec4(lessThanEqual(t.z + plane, depth));
+    vec4 weight = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+    float pcf = dot(lit, weight);
+    vec4 dist = textureGather(distanceMap, at, 0);
+    if (any(greaterThan(abs(dist), vec4(0.5 * OSS_SILDIST_NO_EDGE))))
+        return pcf;
+    // The bilinear boundary, its gradient in texels and the edge's depth.
+    float d = mix(mix(dist.w, dist.z, f.x), mix(dist.x, dist.y, f.x), f.y);
+    vec2 g = vec2(mix(dist.z - dist.w, dist.y - dist.x, f.y), mix(dist.x - dist.w, dist.y - dist.z, f.x));
+    vec4 edgeDepth = textureGather(distanceMap, at, 1);
+    float zE = mix(mix(edgeDepth.w, edgeDepth.z, f.x), mix(edgeDepth.x, edgeDepth.y, f.x), f.y);
+    // Other casters still shadow: the outside texels' own depth tests.
+    vec4 outside = vec4(lessThan(dist, vec4(0.0)));
+    float outsideCount = dot(outside, vec4(1.0));
+    float litOutside = outsideCount > 0.0 ? dot(lit, outside) / outsideCount : 1.0;
+    // An edge behind the point leaves it lit but for other casters (Valient and Bujnak's
+    // rule). A point on the casting side whose four depth tests all pass lies on the caster's
+    // own face beside its rim, or in front of it: lit too.
+    if (zE >= t.z || (d > 0.0 && pcf >= 1.0))
+        return d < 0.0 ? litOutside : 1.0;
+    float footprint = max(abs(dot(g, ux)) + abs(dot(g, uy)), 1e-3);
+    float r = oss_filterScale[s].x * size.x * (t.z - zE);
+    return oss_edgeVisibility(d, r, footprint) * litOutside;
+}
+#else
+// (A translation unit may not be empty.)
+const int oss_silhouetteFilterUnused = 0;
+#endif
