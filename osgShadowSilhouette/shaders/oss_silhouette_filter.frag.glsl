@@ -12,9 +12,10 @@
 //            texels, F(x) = (acos(-x) + x sqrt(1 - x^2)) / pi the share of a disc cut off by
 //            a line at signed distance x (the closed form of the paper's lookup texture).
 // Other casters still shadow: the result is multiplied by the depth tests of the texels on
-// the edge's outside (d_E < 0). An edge behind the point leaves it lit (the paper's rule) but
-// for those tests; so does a point on the casting side whose four depth tests all pass (a
-// caster's own face beside its rim). Where a texel holds no edge: the depth map's bilinear
+// the edge's outside (d_E < 0). Where the edge lies behind the point (the paper's rule: it
+// cannot shadow it) the point is lit but where a caster nearer the light than that edge
+// fails all four depth tests; a point on the casting side whose four depth tests all pass (a
+// caster's own face beside its rim) is lit. Where a texel holds no edge: the depth map's bilinear
 // 2x2 comparison.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE)
@@ -77,11 +78,15 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     vec4 outside = vec4(lessThan(dist, vec4(0.0)));
     float outsideCount = dot(outside, vec4(1.0));
     float litOutside = outsideCount > 0.0 ? dot(lit, outside) / outsideCount : 1.0;
-    // An edge behind the point leaves it lit but for other casters (Valient and Bujnak's
-    // rule). A point on the casting side whose four depth tests all pass lies on the caster's
-    // own face beside its rim, or in front of it: lit too.
-    if (zE >= t.z || (d > 0.0 && pcf >= 1.0))
-        return d < 0.0 ? litOutside : 1.0;
+    // An edge behind the point cannot shadow it (Valient and Bujnak's rule): outside the
+    // edge the outside texels' tests answer; on its casting side the point is shadowed only
+    // where all four depth tests fail, by a caster nearer the light than the edge (any that
+    // passes: the point lies on the edge's own caster beside its rim). A point on the
+    // casting side whose four depth tests all pass is lit (a caster's own face, or in front).
+    if (zE >= t.z)
+        return d < 0.0 ? litOutside : (pcf > 0.0 ? 1.0 : 0.0);
+    if (d > 0.0 && pcf >= 1.0)
+        return 1.0;
     float footprint = max(abs(dot(g, ux)) + abs(dot(g, uy)), 1e-3);
     float r = oss_filterScale[s].x * size.x * (t.z - zE);
     return oss_edgeVisibility(d, r, footprint) * litOutside;

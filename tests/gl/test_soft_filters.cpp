@@ -165,6 +165,30 @@ TEST(SoftFilters, SilhouetteFilterAntiAliasesHardEdges)
     EXPECT_LE(aa.hardWrongPct, hard.hardWrongPct + 0.005);
 }
 
+// The cubes scene: a thousand casters, most in each other's shadows, where the nearest edge
+// of a texel often belongs to a caster behind the point. Such an edge cannot shadow the point
+// and the depth map must answer (a caster nearer the light may): when the filter took the
+// point for lit instead, 3.70% of the pixels were wrong (light leaking into shadows); with the
+// depth map's 2x2 comparison there instead of its all-four-blocked test, the point light
+// case's hard_wrong_pct rose from 0.010% to 0.069% (caster faces beside their own rims).
+TEST(SoftFilters, SilhouetteFilterKeepsOtherCastersShadows)
+{
+    ShadowedRender r("cubes", "silhouette", MAP, W, H);
+    ASSERT_TRUE(r.valid());
+    const ossref::VisibilityMask reference = r.referenceVisibility(0, 1.0);
+    r.technique->setLightSize(1.0f);
+    const ossref::VisibilityComparison hard = score(r, reference);
+    r.technique->setFilter(SilhouetteShadowTechnique::FILTER_SILHOUETTE);
+    const ossref::VisibilityComparison soft = score(r, reference);
+    const ossref::Comparison mask = ossref::compareMasks(r.mask(), r.reference());
+    std::printf("[ soft     ] cubes, sun 1 degree: vis_mae_penumbra hard %.4f, filter %.4f; vis_mae %.5f, %.5f; "
+                "mask wrong_pct %.4f\n",
+                hard.visMaePenumbra, soft.visMaePenumbra, hard.visMae, soft.visMae, mask.wrongPct);
+    // Measured 0.22% (the hard silhouette map 0.019%) and 0.129 against 0.233.
+    EXPECT_LE(mask.wrongPct, 0.3);
+    EXPECT_LT(soft.visMaePenumbra, 0.6 * hard.visMaePenumbra);
+}
+
 TEST(SoftFilters, SizeZeroAndAOneTexelWindowAreTheBaseline)
 {
     ShadowedRender r("default", "shadowmap", MAP, W, H);
