@@ -172,6 +172,7 @@ PeerMask classifyPeerFrames(const osg::Image& shadowed, const osg::Image& unshad
         return out;
     out.mask = ossref::Mask::filled(w, h);
     out.vertexFacing = ossref::Mask::filled(w, h);
+    out.visibility = ossref::VisibilityMask::filled(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
         {
@@ -184,6 +185,7 @@ PeerMask classifyPeerFrames(const osg::Image& shadowed, const osg::Image& unshad
             if (isBackground(s)) continue;
             const bool dark = black || luminance(s) <= 0.5 * lu;
             out.mask.value[i] = dark ? ossref::MASK_NO_LIGHT : ossref::MASK_LIT;
+            out.visibility.value[i] = ossref::encodeVisibility(black ? 0.0 : std::min(1.0, luminance(s) / lu));
         }
     return out;
 }

@@ -61,6 +61,10 @@ struct PeerMask
 {
     ossref::Mask mask;          ///< 0 shadowed, 255 lit, 128 background
     ossref::Mask vertexFacing;  ///< 0 where the unshadowed frame is black, 255 where lit, 128 background
+    /** The shadowed frame's luminance over the unshadowed one's, clamped to [0, 1] (MEASURE.md's
+     *  visibility of a technique without a visibility output: a soft technique's fraction); 0
+     *  where the unshadowed frame is black, VIS_BACKGROUND on background. */
+    ossref::VisibilityMask visibility;
 };
 
 /** Rec. 601 luma of an RGB(A) GL_UNSIGNED_BYTE pixel, 0..255. */

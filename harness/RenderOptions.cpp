@@ -246,6 +246,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     }
     a.read("--visibility", o.visibility);
     a.read("--reference-visibility", o.referenceVisibility);
+    a.read("--compare-visibility", o.compareVisibility);
     std::string factor, units;
     double value = 0.0;
     if (a.read("--polygon-offset", factor, units))
@@ -283,7 +284,8 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--out color.png] [--mask mask%d.png] [--offscreen]\n"
       << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes "
          "classes%d.png]\n"
-      << "    [--light-size S] [--visibility vis%d.png] [--reference-visibility ref%d.png]\n"
+      << "    [--light-size S] [--visibility vis%d.png] [--reference-visibility ref%d.png] [--compare-visibility "
+         "ref%d.png]\n"
       << "    [--polygon-offset FACTOR UNITS] [--skip-empty-faces on|off]\n"
       << "    [--property NAME=VALUE]... (any property of the technique:";
     for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties()) s << " " << p.name;

@@ -55,6 +55,10 @@ struct RenderOptions
     double lightSize = 0.0;
     std::string visibility;          ///< --visibility vis.png: the frame's visibility mask (16-bit)
     std::string referenceVisibility; ///< --reference-visibility ref.png: the exact visibility mask
+    /** --compare-visibility ref.png: score --visibility against this exact visibility mask
+     *  (written earlier by --reference-visibility at the same view and --light-size) instead
+     *  of computing it again. */
+    std::string compareVisibility;
     /** The technique's properties set on the command line, in order, each checked against the
      *  table of properties (osgShadowSilhouette/Properties): --property NAME=VALUE, and the
      *  shorthands of propertyOptions() (--max-shadow-lights N, --hybrid-method lists, ...). */

@@ -13,7 +13,7 @@ PACKAGES=(
   libgl1-mesa-dri libgl-dev xvfb xauth x11-utils  # OpenGL (llvmpipe without a GPU), virtual display
   glmark2-data                               # bunny.obj: a real scanned mesh for benchmarks
   assimp-testmodels                          # the real-world corpus (scripts/corpus.sh, ctest -L corpus)
-  gnuplot-nox                                # benchmark plots
+  gnuplot-nox python3                        # benchmark plots and reports
   clang libclang-rt-dev                      # fuzz targets: clang with libFuzzer, ASan, UBSan runtimes
 )
 # Strip the comments above into a clean list.

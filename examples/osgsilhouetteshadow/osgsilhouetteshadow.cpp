@@ -7,7 +7,9 @@
  * Prints frame_ms_median=..., gpu_ms_median=... and, with --compare or --reference,
  * wrong_pct=... against the exact ray-cast reference; with --visibility and
  * --reference-visibility (and --light-size S), vis_mae=... against the exact visibility of a
- * light with a size (the mode's visibility view: fractions under SHADOW_MAP's soft filters).
+ * light with a size (the mode's visibility view: fractions under a soft filter; a peer's
+ * shadowed over unshadowed luminance); --compare-visibility reads that exact visibility from an
+ * earlier --reference-visibility run instead of casting it again.
  *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
@@ -90,30 +92,53 @@ int runWindowed(osshar::PreparedScene& scene, osg::Node* root, SilhouetteShadowT
     return viewer.run();
 }
 
-/** --visibility and --reference-visibility of light @p index: the technique's visibility view
- *  (fractions under a soft filter; a peer's hard @p mask as v 0 or 1), and the exact visibility of the light
- *  at --light-size; with both, their scores (MEASURE.md, "Soft shadows"). 0, or 1 on failure. */
+/** The exact visibility of light @p index at --light-size: read from --compare-visibility, or
+ *  computed (and written to --reference-visibility). Empty when neither is asked for. */
+ossref::VisibilityMask referenceVisibility(const osshar::RenderOptions& options, const osshar::PreparedScene& scene,
+                                           const ossref::Camera& camera, unsigned int index, int& status)
+{
+    ossref::VisibilityMask reference;
+    if (!options.compareVisibility.empty() && options.referenceVisibility.empty())
+    {
+        if (!ossref::readVisibility(perLightName(options.compareVisibility, index), reference))
+        {
+            std::cerr << "cannot read " << perLightName(options.compareVisibility, index) << "\n", status = 1;
+            return reference;
+        }
+        // An image keeps no grazing band; the hard reference's is the same (the light's centre).
+        const ossref::Mask hard =
+            ossref::computeReferenceMask(*scene.content, camera, osshar::referenceLight(scene.lights[index]),
+                                         scene.castsMask, scene.referenceTraversalMask());
+        if (hard.width == reference.width && hard.height == reference.height) reference.grazing = hard.grazing;
+        return reference;
+    }
+    if (options.referenceVisibility.empty()) return reference;
+    ossref::Light light = osshar::referenceLight(scene.lights[index]);
+    light.size = options.lightSize;
+    reference = ossref::computeReferenceVisibility(*scene.content, camera, light, scene.castsMask,
+                                                   scene.referenceTraversalMask());
+    if (!ossref::writeVisibility(reference, perLightName(options.referenceVisibility, index)))
+        std::cerr << "cannot write " << perLightName(options.referenceVisibility, index) << "\n", status = 1;
+    return reference;
+}
+
+/** --visibility and --reference-visibility (or --compare-visibility) of light @p index: the
+ *  technique's visibility view (fractions under a soft filter), or a peer's @p peerVisibility
+ *  (its shadowed over unshadowed luminance), and the exact visibility of the light at
+ *  --light-size; with both, their scores (MEASURE.md, "Soft shadows"). 0, or 1 on failure. */
 int writeVisibility(const osshar::RenderOptions& options, const osshar::PreparedScene& scene,
-                    const ossref::Camera& camera, const ossref::Mask& mask, osshar::Renderer& renderer,
-                    SilhouetteShadowTechnique* technique, unsigned int index)
+                    const ossref::Camera& camera, const ossref::VisibilityMask& peerVisibility,
+                    osshar::Renderer& renderer, SilhouetteShadowTechnique* technique, unsigned int index)
 {
     int status = 0;
-    ossref::VisibilityMask candidate, reference;
-    if (!options.visibility.empty() && (technique || !mask.empty()))
+    ossref::VisibilityMask candidate;
+    if (!options.visibility.empty() && (technique || !peerVisibility.empty()))
     {
-        candidate = technique ? renderVisibility(renderer, *technique, index) : ossref::visibilityFromMask(mask);
+        candidate = technique ? renderVisibility(renderer, *technique, index) : peerVisibility;
         if (!ossref::writeVisibility(candidate, perLightName(options.visibility, index)))
             std::cerr << "cannot write " << perLightName(options.visibility, index) << "\n", status = 1;
     }
-    if (!options.referenceVisibility.empty())
-    {
-        ossref::Light light = osshar::referenceLight(scene.lights[index]);
-        light.size = options.lightSize;
-        reference = ossref::computeReferenceVisibility(*scene.content, camera, light, scene.castsMask,
-                                                       scene.referenceTraversalMask());
-        if (!ossref::writeVisibility(reference, perLightName(options.referenceVisibility, index)))
-            std::cerr << "cannot write " << perLightName(options.referenceVisibility, index) << "\n", status = 1;
-    }
+    const ossref::VisibilityMask reference = referenceVisibility(options, scene, camera, index, status);
     if (candidate.empty() || reference.empty()) return status;
     const ossref::VisibilityComparison c = ossref::compareVisibility(reference, candidate);
     if (!c.valid)
@@ -166,7 +191,7 @@ int main(int argc, char** argv)
     osg::DisplaySettings::instance()->setMinimumNumStencilBits(8);
     const bool batch = options.offscreen || !options.out.empty() || !options.mask.empty() ||
                        !options.reference.empty() || !options.classes.empty() || !options.visibility.empty() ||
-                       !options.referenceVisibility.empty();
+                       !options.referenceVisibility.empty() || !options.compareVisibility.empty();
     if (!batch) return runWindowed(scene, root.get(), technique.get());
 
     osshar::Renderer renderer(options.width, options.height, options.offscreen);
@@ -255,7 +280,8 @@ int main(int argc, char** argv)
             if (!options.mask.empty() && !ossref::writeMask(mask, perLightName(options.mask, i)))
                 std::cerr << "cannot write " << perLightName(options.mask, i) << "\n", status = 1;
         }
-        if (writeVisibility(options, scene, refCamera, mask, renderer, peer ? nullptr : technique.get(), i) != 0)
+        if (writeVisibility(options, scene, refCamera, peerMask.visibility, renderer, peer ? nullptr : technique.get(),
+                            i) != 0)
             status = 1;
         if (!options.reference.empty() || (!options.compare.empty() && !ossref::readMask(perLightName(options.compare, i), reference)))
         {

@@ -69,6 +69,7 @@ TEST(RenderOptions, SoftShadowOptionsParse)
     EXPECT_EQ(p.options.lightSize, 0.25);
     EXPECT_EQ(p.options.visibility, "vis%d.png");
     EXPECT_EQ(p.options.referenceVisibility, "ref.png");
+    EXPECT_EQ(parse({"--compare-visibility", "ref%d.png"}).options.compareVisibility, "ref%d.png");
     EXPECT_EQ(parse({}).options.lightSize, 0.0); // a hard shadow unless asked
 }
 

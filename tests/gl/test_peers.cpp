@@ -87,16 +87,26 @@ TEST(PeerModes, NamesAndTechniques)
     EXPECT_FALSE(osshar::isPeerMode("shadowmap"));
 }
 
-TEST(PeerClassification, HalfOfTheUnshadowedLuminanceIsShadow)
+namespace {
+
+/** classifyPeerFrames of two 4 x 1 RGB frames. */
+osshar::PeerMask classifyRow(const unsigned char (&s)[4][3], const unsigned char (&u)[4][3])
 {
     osg::ref_ptr<osg::Image> shadowed = new osg::Image, plain = new osg::Image;
     shadowed->allocateImage(4, 1, 1, GL_RGB, GL_UNSIGNED_BYTE);
     plain->allocateImage(4, 1, 1, GL_RGB, GL_UNSIGNED_BYTE);
-    const unsigned char s[4][3] = {{100, 100, 100}, {101, 101, 101}, {0, 0, 0}, {255, 0, 255}};
-    const unsigned char u[4][3] = {{200, 200, 200}, {200, 200, 200}, {0, 0, 0}, {255, 0, 255}};
     std::memcpy(shadowed->data(), s, sizeof(s));
     std::memcpy(plain->data(), u, sizeof(u));
-    const osshar::PeerMask m = osshar::classifyPeerFrames(*shadowed, *plain);
+    return osshar::classifyPeerFrames(*shadowed, *plain);
+}
+
+} // namespace
+
+TEST(PeerClassification, HalfOfTheUnshadowedLuminanceIsShadow)
+{
+    const unsigned char s[4][3] = {{100, 100, 100}, {101, 101, 101}, {0, 0, 0}, {255, 0, 255}};
+    const unsigned char u[4][3] = {{200, 200, 200}, {200, 200, 200}, {0, 0, 0}, {255, 0, 255}};
+    const osshar::PeerMask m = classifyRow(s, u);
     ASSERT_EQ(m.mask.width, 4);
     EXPECT_EQ(m.mask.at(0, 0), ossref::MASK_NO_LIGHT);   // exactly half: shadowed
     EXPECT_EQ(m.mask.at(1, 0), ossref::MASK_LIT);        // above half: lit
@@ -104,6 +114,20 @@ TEST(PeerClassification, HalfOfTheUnshadowedLuminanceIsShadow)
     EXPECT_EQ(m.mask.at(3, 0), ossref::MASK_BACKGROUND); // the clear colour
     EXPECT_EQ(m.vertexFacing.at(2, 0), ossref::MASK_NO_LIGHT);
     EXPECT_EQ(m.vertexFacing.at(0, 0), ossref::MASK_LIT);
+}
+
+TEST(PeerClassification, VisibilityIsTheLuminanceRatio)
+{
+    // A quarter lit, brighter than unshadowed (a specular or rounding excess: clamped to 1),
+    // black unshadowed, background.
+    const unsigned char s[4][3] = {{50, 50, 50}, {210, 210, 210}, {0, 0, 0}, {255, 0, 255}};
+    const unsigned char u[4][3] = {{200, 200, 200}, {200, 200, 200}, {0, 0, 0}, {255, 0, 255}};
+    const osshar::PeerMask m = classifyRow(s, u);
+    ASSERT_EQ(m.visibility.width, 4);
+    EXPECT_NEAR(ossref::decodeVisibility(m.visibility.at(0, 0)), 0.25, 1e-4);
+    EXPECT_EQ(m.visibility.at(1, 0), ossref::encodeVisibility(1.0));
+    EXPECT_EQ(m.visibility.at(2, 0), ossref::encodeVisibility(0.0));
+    EXPECT_EQ(m.visibility.at(3, 0), ossref::VIS_BACKGROUND);
 }
 
 TEST(PeerExclusion, OnlyDisagreeingGeometryPixelsJoinTheBand)
