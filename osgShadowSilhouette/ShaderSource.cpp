@@ -43,7 +43,8 @@ std::string shaderPrelude()
     // SILHOUETTE_MAP's second maps: neighbourhood maps, or edge distances under FILTER_SILHOUETTE.
     s << "#ifdef OSS_FILTER_SILHOUETTE\n#define OSS_SILHOUETTE_SAMPLER sampler2D\n#else\n"
          "#define OSS_SILHOUETTE_SAMPLER usampler2D\n#endif\n"
-      << "#define OSS_SILDIST_NO_EDGE " << std::scientific << shader::SILDIST_NO_EDGE << std::defaultfloat << "\n";
+      << "#define OSS_SILDIST_NO_EDGE " << std::scientific << shader::SILDIST_NO_EDGE << std::defaultfloat << "\n"
+      << "#define OSS_SILDIST_SAMPLE_REACH " << std::fixed << shader::SILDIST_SAMPLE_REACH << std::defaultfloat << "\n";
     return s.str();
 }
 

@@ -501,7 +501,8 @@ SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::ve
     budget.mapSize = _shadowMapSize;
     budget.slotLimit = slotCapacity(pairedSlots(frame.mode));
     budget.cubeFaces = frame.mode != SHADOW_VOLUME; // the volumes reach every direction
-    if (frame.mode == SHADOW_MAP) budget.faceMarginTexels = detail::filterReachTexels(_filter, _filterWindow);
+    if (frame.mode == SHADOW_MAP || (frame.mode == SILHOUETTE_MAP && _filter == FILTER_SILHOUETTE))
+        budget.faceMarginTexels = detail::filterReachTexels(_filter, _filterWindow);
     SlotPlan plan = detail::planSlots(frame, lights, budget, warner(), stats.lightsSkipped);
     frame.slotsInUse = plan.slotsInUse;
     return plan;

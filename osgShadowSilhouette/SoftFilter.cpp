@@ -119,8 +119,11 @@ double filterReachTexels(SilhouetteShadowTechnique::Filter filter, unsigned int 
     {
     case SilhouetteShadowTechnique::FILTER_PCF: return std::max(4.0, 0.5 * window + 2.0);
     case SilhouetteShadowTechnique::FILTER_PCSS: return double(shader::PCSS_MAX_RADIUS_TEXELS) + 2.0;
-    case SilhouetteShadowTechnique::FILTER_PCF_2X2:
-    case SilhouetteShadowTechnique::FILTER_SILHOUETTE: break; // SILHOUETTE_MAP's: not read here
+    // SILHOUETTE_MAP's: its samples lie up to SILDIST_SAMPLE_REACH from the point, and their
+    // edges up to the distance band's width beyond them.
+    case SilhouetteShadowTechnique::FILTER_SILHOUETTE:
+        return double(shader::SILDIST_SAMPLE_REACH) + double(shader::SILDIST_MAX_WIDTH) + 2.0;
+    case SilhouetteShadowTechnique::FILTER_PCF_2X2: break;
     }
     return 4.0;
 }

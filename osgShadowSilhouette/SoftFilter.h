@@ -51,9 +51,11 @@ double lightSize(const osg::Light& light, const SizedLightSources* sources, Ligh
  *  -P00 R / P32 (OSG's row-vector matrices). 0 for size 0 or an invalid frustum. */
 osg::Vec2 penumbraScale(const LightFrustum& frustum, LightDescription::Type type, double size);
 
-/** How far, in texels, SHADOW_MAP's filter reads around a point (a cube face's map must
- *  reach that far past its own square): 4 for the 2x2 PCF (the default margin), the window's
- *  half and two for FILTER_PCF, PCSS's largest radius and two for FILTER_PCSS. */
+/** How far, in texels, a filter reads around a point (a cube face's map must reach that far
+ *  past its own square): 4 for the 2x2 PCF (the default margin), the window's half and two
+ *  for FILTER_PCF, PCSS's largest radius and two for FILTER_PCSS; for SILHOUETTE_MAP's
+ *  FILTER_SILHOUETTE, its samples' reach (SILDIST_SAMPLE_REACH) and the distance band's
+ *  width beyond it, and two. */
 double filterReachTexels(SilhouetteShadowTechnique::Filter filter, unsigned int window);
 
 } // namespace detail

@@ -6,7 +6,7 @@
 Writes, from the rows of the CSV:
 - the generated block `soft` of docs/benchmarks.md: every row, grouped by scene and light;
 - the block `soft-goals` of docs/benchmarks.md: per scene, light, size and map size, the
-  issue's goals for FILTER_SILHOUETTE (SILHOUETTE_MAP's seed filter) measured side by side:
+  goals for FILTER_SILHOUETTE (SILHOUETTE_MAP's seed filter) measured side by side:
   its vis_mae_penumbra against binary SHADOW_MAP's (size 0: at most half), against PCSS's and
   half of osgShadow SoftShadowMap's (sized lights), and its frame time against SHADOW_MAP's
   2x2 PCF (at most 2x) and PCSS's (at most 1x);

@@ -21,6 +21,7 @@
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE)
 #if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
 #define OSS_SILDIST_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a texel
+#define OSS_SILDIST_SAMPLES_MIN_RADIUS 1.0 // penumbrae narrower than this (texels) take one sample
 #define OSS_PI 3.14159265358979
 
 uniform vec2 oss_filterScale[OSS_MAX_SHADOW_SLOTS]; // penumbra radius (texture space) per unit of depth
@@ -45,17 +46,14 @@ float oss_edgeVisibility(float d, float r, float f)
     return 1.0 - oss_discCut(d / max(r, 0.64 * f));
 }
 
-float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition)
+// One sample of the extended map at texel position u (texel centres at integers) for a
+// receiver at depth z: the visibility across the nearest edge for a penumbra of radius
+// `radius` (z - z_E) texels (0: the anti-aliased hard edge). zEdge: the edge's depth, or z
+// where the answer does not come from an edge in front of the point (no penumbra there).
+float oss_edgeSample(sampler2D depthMap, sampler2D distanceMap, vec2 u, float z, vec2 slope, vec2 size, float radius,
+                     float share, vec2 ux, vec2 uy, out float zEdge)
 {
-    vec4 c = eyeToShadow * eyePosition;
-    vec3 t = c.xyz / c.w;
-    vec2 slope = oss_depthSlope(t); // derivatives: before any branch
-    vec2 size = vec2(textureSize(depthMap, 0));
-    vec2 u = t.xy * size - 0.5;
-    vec2 ux = dFdx(u), uy = dFdy(u);
-    if (c.w <= 0.0)
-        return 1.0; // behind a perspective light: outside its map
-    t.z = min(t.z - oss_lookupBias(eyeToShadow, c, eyePosition), 1.0);
+    zEdge = z;
     vec2 base = floor(u), f = u - base;
     vec2 at = (base + 1.0) / size;
     // textureGather's order: (0,1), (1,1), (1,0), (0,0).
@@ -63,7 +61,7 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     vec4 dx = (vec4(0.0, 1.0, 1.0, 0.0) - f.x) / size.x;
     vec4 dy = (vec4(1.0, 1.0, 0.0, 0.0) - f.y) / size.y;
     vec4 plane = clamp(dx * slope.x + dy * slope.y, -OSS_SILDIST_MAX_PLANE_BIAS, OSS_SILDIST_MAX_PLANE_BIAS);
-    vec4 lit = vec4(lessThanEqual(t.z + plane, depth));
+    vec4 lit = vec4(lessThanEqual(z + plane, depth));
     vec4 weight = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
     float pcf = dot(lit, weight);
     vec4 dist = textureGather(distanceMap, at, 0);
@@ -83,13 +81,49 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     // where all four depth tests fail, by a caster nearer the light than the edge (any that
     // passes: the point lies on the edge's own caster beside its rim). A point on the
     // casting side whose four depth tests all pass is lit (a caster's own face, or in front).
-    if (zE >= t.z)
+    if (zE >= z)
         return d < 0.0 ? litOutside : (pcf > 0.0 ? 1.0 : 0.0);
     if (d > 0.0 && pcf >= 1.0)
         return 1.0;
-    float footprint = max(abs(dot(g, ux)) + abs(dot(g, uy)), 1e-3);
-    float r = oss_filterScale[s].x * size.x * (t.z - zE);
-    return oss_edgeVisibility(d, r, footprint) * litOutside;
+    zEdge = zE;
+    float footprint = share * max(abs(dot(g, ux)) + abs(dot(g, uy)), 1e-3);
+    return oss_edgeVisibility(d, radius * (z - zE), footprint) * litOutside;
+}
+
+float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    vec4 c = eyeToShadow * eyePosition;
+    vec3 t = c.xyz / c.w;
+    vec2 slope = oss_depthSlope(t); // derivatives: before any branch
+    vec2 size = vec2(textureSize(depthMap, 0));
+    vec2 u = t.xy * size - 0.5;
+    vec2 ux = dFdx(u), uy = dFdy(u);
+    if (c.w <= 0.0)
+        return 1.0; // behind a perspective light: outside its map
+    t.z = min(t.z - oss_lookupBias(eyeToShadow, c, eyePosition), 1.0);
+    float scale = oss_filterScale[s].x * size.x; // penumbra radius in texels per unit of depth
+    float zE;
+    float centre = oss_edgeSample(depthMap, distanceMap, u, t.z, slope, size, scale, 1.0, ux, uy, zE);
+    float r = scale * (t.z - zE);
+    if (r < OSS_SILDIST_SAMPLES_MIN_RADIUS)
+        return centre;
+    // The paper's samples around the point, seven here: the light's disc, seen through the
+    // blocker plane as a disc of radius r texels around u, split into a centre disc of radius
+    // r / 3 and six sectors of the ring around it, each answered as an equal-area disc
+    // (radius 0.385 r) at its sector's centroid (0.689 r from u) across its own nearest edge,
+    // weighted by area (1/9 and 8/54); the receiver's plane gives each its depth. Where two
+    // edges lie inside the penumbra (a caster thinner than it, touching silhouettes) the
+    // samples see different edges, which one sample across the nearest edge cannot.
+    float zEc;
+    float v = oss_edgeSample(depthMap, distanceMap, u, t.z, slope, size, scale / 3.0, 1.0 / 3.0, ux, uy, zEc) / 9.0;
+    for (int k = 0; k < 6; ++k)
+    {
+        float a = 1.04719755 * float(k);
+        vec2 offset = min(0.689 * r, OSS_SILDIST_SAMPLE_REACH) * vec2(cos(a), sin(a)); // within a cube face's margin
+        float zk = t.z + dot(slope, offset / size), zEk;
+        v += oss_edgeSample(depthMap, distanceMap, u + offset, zk, slope, size, 0.385 * scale, 0.385, ux, uy, zEk) * (8.0 / 54.0);
+    }
+    return v;
 }
 #else
 // (A translation unit may not be empty.)

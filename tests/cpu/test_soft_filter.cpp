@@ -135,6 +135,8 @@ TEST(FilterReach, CubeFacesReachAsFarAsTheFilterReads)
     EXPECT_EQ(detail::filterReachTexels(T::FILTER_PCF, 3), 4.0);
     EXPECT_EQ(detail::filterReachTexels(T::FILTER_PCF, 16), 10.0);
     EXPECT_EQ(detail::filterReachTexels(T::FILTER_PCSS, 3), shader::PCSS_MAX_RADIUS_TEXELS + 2.0);
+    EXPECT_EQ(detail::filterReachTexels(T::FILTER_SILHOUETTE, 3),
+              shader::SILDIST_SAMPLE_REACH + shader::SILDIST_MAX_WIDTH + 2.0);
     // A wider margin widens each face's field of view (at 2048: 50 texels about 2.8 degrees).
     EXPECT_GT(cubeFaceFov(2048, 50.0), cubeFaceFov(2048, 4.0) + 2.0);
 }
