@@ -37,7 +37,8 @@ std::map<std::string, std::string> eyePassDefines(const EyePassPlan& plan)
     flag(shader::DEFINE_FILTER_SILHOUETTE, distances);
     const bool points = silhouette && !distances;
     flag(shader::DEFINE_DEBUG_SILHOUETTE_PIXELS, points && plan.debugView == Technique::DEBUG_SILHOUETTE_PIXELS);
-    flag(shader::DEFINE_DEBUG_SILHOUETTE_MAP, points && plan.debugView == Technique::DEBUG_SILHOUETTE_MAP);
+    // DEBUG_SILHOUETTE_MAP: the silhouette points, or under FILTER_SILHOUETTE the edge distances.
+    flag(shader::DEFINE_DEBUG_SILHOUETTE_MAP, silhouette && plan.debugView == Technique::DEBUG_SILHOUETTE_MAP);
     flag(shader::DEFINE_TRIANGLE_LISTS, lists);
     flag(shader::DEFINE_LIST_IMAGES, lists && plan.listImages);
     flag(shader::DEFINE_LIST_BLOCK_HEADS, lists && plan.listImages && plan.listBlockHeads);

@@ -127,7 +127,8 @@ std::vector<PropertyInfo> lightRows()
           {"DEBUG_VISIBILITY", T::DEBUG_VISIBILITY, "visibility"}},
          "what the eye pass shows of light DebugLight instead of the shaded scene",
          "`DEBUG_SHADOW_MASK`: the MEASURE.md mask; `DEBUG_SILHOUETTE_PIXELS`, `DEBUG_SILHOUETTE_MAP`: "
-         "SILHOUETTE_MAP's silhouette pixels (green) and its silhouette map; `DEBUG_CLASSES`: every "
+         "SILHOUETTE_MAP's silhouette pixels (green) and its silhouette map (under `FILTER_SILHOUETTE`: "
+         "its edge distances, orange on the casting side, blue outside); `DEBUG_CLASSES`: every "
          "mode's pixel classes in Chan and Durand's colours (below); `DEBUG_VISIBILITY`: the light's "
          "visibility as a grey level, the mask before its threshold (fractions under a soft `Filter`)"},
         {OSS_PROPERTY(DebugLight), P::UINT, 0, 2, 0, LAST_LIGHT, "an index among the lights found", {},

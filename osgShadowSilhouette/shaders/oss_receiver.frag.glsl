@@ -42,6 +42,7 @@ float oss_pcf(sampler2DShadow map, mat4 eyeToShadow, vec4 eyePosition);
 // FILTER_SILHOUETTE: the edge distances, oss_silhouetteFilterTerm() (oss_silhouette_filter.frag.glsl).
 uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // distance maps (oss_sildist.frag.glsl)
 float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition);
+vec4 oss_silhouetteDebug(vec4 eyePosition); // DEBUG_SILHOUETTE_MAP: the edge distances
 #define OSS_SLOT_TERM(s) oss_silhouetteFilterTerm(s, oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], oss_eyePosition)
 #elif defined(OSS_SILHOUETTE_MAP)
 uniform usampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // neighbourhood maps (oss_silnbr.frag.glsl)

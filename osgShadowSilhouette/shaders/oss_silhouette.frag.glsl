@@ -11,7 +11,7 @@
 // Frames: see osgShadowSilhouette/SilhouettePoints; the C++ twin is silhouetteMapLit().
 // Compiled empty unless OSS_SILHOUETTE_MAP is defined.
 
-#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE)
 #ifdef OSS_SILHOUETTE_MAP
 #define OSS_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a corner
 
@@ -195,7 +195,9 @@ float oss_silhouettePixelOverlay(sampler2D depthMap, mat4 eyeToShadow, vec4 eyeP
     return oss_silhouetteSample(depthMap, eyeToShadow, eyePosition, s) && oss_isSilhouettePixel(s) ? 1.0 : 0.0;
 }
 
-#if defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP)
+// (Under FILTER_SILHOUETTE the second maps hold distances: oss_silhouette_filter.frag.glsl
+// draws DEBUG_SILHOUETTE_MAP.)
+#if (defined(OSS_DEBUG_SILHOUETTE_PIXELS) || defined(OSS_DEBUG_SILHOUETTE_MAP)) && !defined(OSS_FILTER_SILHOUETTE)
 uniform int oss_maskLight;
 uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];

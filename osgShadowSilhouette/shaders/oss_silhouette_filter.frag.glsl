@@ -18,7 +18,7 @@
 // caster's own face beside its rim) is lit. Where a texel holds no edge: the depth map's bilinear
 // 2x2 comparison.
 
-#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE)
+#pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE, OSS_MAX_SHADOW_LIGHTS, OSS_DEBUG_SILHOUETTE_MAP)
 #if defined(OSS_SILHOUETTE_MAP) && defined(OSS_FILTER_SILHOUETTE)
 #define OSS_SILDIST_MAX_PLANE_BIAS 0.01 // largest depth change the plane bias applies to a texel
 #define OSS_SILDIST_SAMPLES_MIN_RADIUS 1.0 // penumbrae narrower than this (texels) take one sample
@@ -125,6 +125,44 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     }
     return v;
 }
+
+#ifdef OSS_DEBUG_SILHOUETTE_MAP
+uniform int oss_maskLight;
+uniform int oss_lightIndex[OSS_MAX_SCENE_LIGHTS];
+uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
+uniform sampler2D oss_silhouetteMap[OSS_MAX_SHADOW_SLOTS]; // distance maps
+int oss_shadowSlotOf(int light);
+
+// DebugView DEBUG_SILHOUETTE_MAP under FILTER_SILHOUETTE: the distance map of the light
+// oss_maskLight projected on the scene (rgb, opacity). Orange on an edge's casting side, blue
+// outside it, fading over 8 texels; white where the bilinear boundary (d = 0) passes; clear
+// where no edge lies within the band.
+vec4 oss_distanceOverlay(sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition)
+{
+    vec4 c = eyeToShadow * eyePosition;
+    vec2 size = vec2(textureSize(distanceMap, 0));
+    vec2 u = (c.xy / c.w) * size - 0.5;
+    vec2 base = floor(u), f = u - base;
+    vec4 dist = textureGather(distanceMap, (base + 1.0) / size, 0);
+    float d = mix(mix(dist.w, dist.z, f.x), mix(dist.x, dist.y, f.x), f.y); // as the eye term reads it
+    float perPixel = fwidth(d);
+    if (c.w <= 0.0 || any(greaterThan(abs(dist), vec4(0.5 * OSS_SILDIST_NO_EDGE))))
+        return vec4(0.0);
+    if (abs(d) < max(perPixel, 0.05))
+        return vec4(1.0);
+    vec3 side = d > 0.0 ? vec3(1.0, 0.55, 0.1) : vec3(0.1, 0.6, 1.0);
+    return vec4(side, 0.8 * exp(-abs(d) / 8.0));
+}
+
+vec4 oss_silhouetteDebug(vec4 eyePosition)
+{
+    int slot = oss_shadowSlotOf(oss_lightIndex[clamp(oss_maskLight, 0, OSS_MAX_SCENE_LIGHTS - 1)]);
+    for (int s = 0; s < OSS_MAX_SHADOW_LIGHTS; ++s)
+        if (s == slot)
+            return oss_distanceOverlay(oss_silhouetteMap[s], oss_eyeToShadow[s], eyePosition);
+    return vec4(0.0);
+}
+#endif
 #else
 // (A translation unit may not be empty.)
 const int oss_silhouetteFilterUnused = 0;

@@ -153,8 +153,9 @@ TEST(EyePass, SoftFiltersInShadowMapOnly)
     }
 }
 
-// FILTER_SILHOUETTE: its define in SILHOUETTE_MAP only, which then reads distances, not the
-// silhouette points its overlays show; the other modes keep their answer.
+// FILTER_SILHOUETTE: its define in SILHOUETTE_MAP only, which then reads distances (and its
+// DEBUG_SILHOUETTE_MAP overlay shows them, not silhouette points); the other modes keep their
+// answer.
 TEST(EyePass, SilhouetteFilterInSilhouetteMapOnly)
 {
     using T = SilhouetteShadowTechnique;
@@ -167,7 +168,7 @@ TEST(EyePass, SilhouetteFilterInSilhouetteMapOnly)
         const bool silhouette = mode == T::SILHOUETTE_MAP;
         EXPECT_EQ(d.count(shader::DEFINE_FILTER_SILHOUETTE), silhouette ? 1u : 0u) << T::modeName(mode);
         EXPECT_EQ(d.count(shader::DEFINE_SILHOUETTE_MAP), silhouette ? 1u : 0u) << T::modeName(mode);
-        EXPECT_EQ(d.count(shader::DEFINE_DEBUG_SILHOUETTE_MAP), 0u) << T::modeName(mode);
+        EXPECT_EQ(d.count(shader::DEFINE_DEBUG_SILHOUETTE_MAP), silhouette ? 1u : 0u) << T::modeName(mode);
         EXPECT_EQ(d.count(shader::DEFINE_FILTER_PCF) + d.count(shader::DEFINE_FILTER_PCSS), 0u) << T::modeName(mode);
     }
     EyePassPlan p = plan(T::SILHOUETTE_MAP);
