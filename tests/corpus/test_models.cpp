@@ -205,8 +205,8 @@ constexpr double kSoftSize = 2.0; // degrees
 
 // The bounds: the largest vis_mae_penumbra measured over the subset with a margin of a fifth
 // or so (PCSS 0.077 on Teapots; FILTER_SILHOUETTE 0.060 on Hierarchy, 0.015-0.060 elsewhere,
-// where one sample across the nearest edge measured up to 0.113, on Test3ds). Each filter
-// also stays below half of its mode's hard answer (0.20-0.28).
+// where one sample across the nearest edge measured up to 0.120 and failed four models).
+// Each filter also stays below half of its mode's hard answer (0.20-0.28).
 const SoftFilter kSoftFilters[] = {
     {"pcss", "shadowmap", SilhouetteShadowTechnique::FILTER_PCSS, 0.09},
     {"silhouette", "silhouette", SilhouetteShadowTechnique::FILTER_SILHOUETTE, 0.075},
