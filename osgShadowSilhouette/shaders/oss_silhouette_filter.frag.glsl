@@ -119,9 +119,11 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     for (int k = 0; k < 6; ++k)
     {
         float a = 1.04719755 * float(k);
-        vec2 offset = min(0.689 * r, OSS_SILDIST_SAMPLE_REACH) * vec2(cos(a), sin(a)); // within a cube face's margin
+        // (At most SILDIST_SAMPLE_REACH texels away: within a cube face's margin.)
+        vec2 offset = min(0.689 * r, OSS_SILDIST_SAMPLE_REACH) * vec2(cos(a), sin(a));
         float zk = t.z + dot(slope, offset / size), zEk;
-        v += oss_edgeSample(depthMap, distanceMap, u + offset, zk, slope, size, 0.385 * scale, 0.385, ux, uy, zEk) * (8.0 / 54.0);
+        float vk = oss_edgeSample(depthMap, distanceMap, u + offset, zk, slope, size, 0.385 * scale, 0.385, ux, uy, zEk);
+        v += vk * (8.0 / 54.0);
     }
     return v;
 }
