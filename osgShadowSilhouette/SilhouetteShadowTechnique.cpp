@@ -561,9 +561,11 @@ void SilhouetteShadowTechnique::warnFilterMode(Mode mode) const
     // FILTER_PCF and FILTER_PCSS are SHADOW_MAP's, FILTER_SILHOUETTE is SILHOUETTE_MAP's.
     const Mode owner = _filter == FILTER_SILHOUETTE ? SILHOUETTE_MAP : SHADOW_MAP;
     if (_filter == FILTER_PCF_2X2 || mode == owner) return;
-    warnOnce(detail::WARN_FILTER_MODE, "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) +
-                                           " applies to " + (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") +
-                                           " only; mode " + modeName(mode) + " renders its own hard shadows");
+    warnOnce(detail::WARN_FILTER_MODE,
+             "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) + " applies to " +
+                 (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") + " only; mode " + modeName(mode) +
+                 " renders its own " +
+                 (mode == HYBRID ? "shadows (soft by its shadow rays under a light with a size)" : "hard shadows"));
 }
 
 void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)
