@@ -177,7 +177,7 @@ const std::vector<std::pair<std::string, std::string>>& propertyOptions()
         {"--hybrid-method", "HybridMethod"},          {"--hybrid-edges", "HybridEdgeMask"},
         {"--depth-prepass", "DepthPrepass"},          {"--shadow-ray-offset", "ShadowRayOffset"},
         {"--per-pixel-lighting", "PerPixelLighting"}, {"--filter", "Filter"},
-        {"--filter-window", "FilterWindow"}};
+        {"--filter-window", "FilterWindow"},          {"--soft-samples", "SoftSamples"}};
     return options;
 }
 

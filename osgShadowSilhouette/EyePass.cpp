@@ -43,6 +43,7 @@ std::map<std::string, std::string> eyePassDefines(const EyePassPlan& plan)
     flag(shader::DEFINE_LIST_IMAGES, lists && plan.listImages);
     flag(shader::DEFINE_LIST_BLOCK_HEADS, lists && plan.listImages && plan.listBlockHeads);
     flag(shader::DEFINE_COUNT_EXACT, lists && plan.countExact);
+    flag(shader::DEFINE_LIST_SOFT, lists && plan.listSoft);
     flag(shader::DEFINE_BIAS_BAND, hybrid);
     flag(shader::DEFINE_HYBRID_EDGES, hybrid && plan.edgeMasks);
     return d;
@@ -61,7 +62,7 @@ const std::vector<std::string>& eyePassDefineNames()
         shader::DEFINE_COUNT_EXACT,          shader::DEFINE_BIAS_BAND,
         shader::DEFINE_HYBRID_EDGES,         shader::DEFINE_DEBUG_VISIBILITY,
         shader::DEFINE_FILTER_PCF,           shader::DEFINE_FILTER_PCSS,
-        shader::DEFINE_FILTER_SILHOUETTE,
+        shader::DEFINE_FILTER_SILHOUETTE,    shader::DEFINE_LIST_SOFT,
     };
     return names;
 }

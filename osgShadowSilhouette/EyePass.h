@@ -24,6 +24,7 @@ struct EyePassPlan
     bool listImages = false;     ///< ... read as images
     bool listBlockHeads = false; ///< ... with each walk's prologue from storage blocks
     bool countExact = false;     ///< ... counting the pixels it resolves (statistics)
+    bool listSoft = false;       ///< ... casting shadow rays to lights with a size (soft shadows)
     bool edgeMasks = false;      ///< HYBRID's edge masks
     unsigned int listSlots = 1;  ///< slots with triangle lists (their storage blocks or images)
     unsigned int slotCapacity = 1; ///< slots the eye pass declares (sizes the map arrays)

@@ -72,6 +72,7 @@ struct ViewData : public osg::Referenced
     osg::ref_ptr<osg::Uniform> numLights, lightIndex, shadowSlot, eyeToShadow, maskLight, slotOwner, slotCore;
     osg::ref_ptr<osg::Uniform> filterScale; ///< PCSS: each slot's penumbraScale() (SoftFilter.h)
     osg::ref_ptr<osg::Uniform> listCapacity, listPerspective, listRayFrame; ///< HYBRID with triangle lists
+    osg::ref_ptr<osg::Uniform> listLight, listLightSize, listSoftSamples, listEyeToPattern; ///< ... and soft shadows
     osg::ref_ptr<osg::Uniform> lookupBiasFrame; ///< the map lookups' depth bias (LOOKUP_BIAS_FRAME)
     std::vector<LightPass> passes;              ///< per shadow slot: the lights' own, then cube faces
     std::vector<bool> slotInUse;                ///< slots whose map this frame's receivers read
@@ -97,6 +98,7 @@ struct FrameContext
     std::size_t casterSignature = 0;      ///< hash of the casters' drawables, matrices and array versions
     std::vector<CasterPart> casterParts;  ///< the casters drawable by drawable (cube faces' choice)
     bool triangleLists = false;           ///< HYBRID resolves silhouette pixels with triangle lists
+    bool sizedLights = false;             ///< a light found has a size (soft shadows)
     bool stencil = false;        ///< the eye pass runs stencil passes (SHADOW_VOLUME, HYBRID's stencil volumes)
     unsigned int slotsInUse = 0; ///< slots 0 .. slotsInUse-1 hold this frame's lights and cube faces
     std::vector<const osg::Drawable*> nonFinite; ///< casters with NaN or infinite vertices: left out

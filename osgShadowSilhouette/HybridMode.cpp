@@ -4,6 +4,7 @@
 // queries in the depth pass to skip the volumes of hidden casters.
 #include "ModePass.h"
 #include "RenderLeaves.h"
+#include "SoftFilter.h"
 
 #include <osgShadowSilhouette/ShaderConstants>
 
@@ -25,10 +26,20 @@ using Technique = SilhouetteShadowTechnique;
 bool useTriangleLists(ModeFrame& mf)
 {
     const Technique::HybridMethod method = mf.settings.hybridMethod;
-    if (method == Technique::HYBRID_STENCIL_VOLUMES) return false;
     const osg::State* state = mf.cv.getState();
     const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
     const bool supported = ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier;
+    if (method == Technique::HYBRID_STENCIL_VOLUMES)
+    {
+        // The volumes answer for the light's centre alone: a light with a size takes the lists.
+        if (!mf.frame.sizedLights) return false;
+        mf.services.warnOnce(WARN_STENCIL_SOFT,
+                             std::string("HybridMethod HYBRID_STENCIL_VOLUMES casts hard shadows only; a light with a "
+                                         "size (LightSize or ShadowLightSize) ") +
+                                 (supported ? "takes HYBRID_TRIANGLE_LISTS' soft shadows"
+                                            : "casts its hard shadow (triangle lists need OpenGL 4.3)"));
+        return supported;
+    }
     if (!supported && method == Technique::HYBRID_TRIANGLE_LISTS)
         mf.services.warnOnce(WARN_NO_TRIANGLE_LISTS,
                              "HybridMethod HYBRID_TRIANGLE_LISTS needs OpenGL 4.3 (shader storage buffers, image "
@@ -160,6 +171,24 @@ void bindLists(ModeFrame& mf, const LightPass& pass, unsigned int slot, const Li
     mf.vd.listPerspective->setElement(slot, light.type != LightDescription::DIRECTIONAL ? 1 : 0);
 }
 
+/** A light with a size: the eye pass casts shadow rays to it (oss_listSoftTerm()), from the
+ *  pixels its blocker search over the light's footprint classifies as penumbra. */
+void bindSoftLight(ModeFrame& mf, SlotCull& slot)
+{
+    const LightDescription& light = slot.light;
+    if (!(light.size > 0.0)) return;
+    const bool directional = light.type == LightDescription::DIRECTIONAL;
+    osg::Vec4d eye = light.homogeneous() * *mf.cv.getModelViewMatrix();
+    if (directional)
+        eye = osg::Vec4d(osg::Vec3d(eye.x(), eye.y(), eye.z()) / osg::Vec3d(eye.x(), eye.y(), eye.z()).length(), 0.0);
+    const double size = directional ? 1.0 - std::cos(osg::DegreesToRadians(light.size)) : light.size;
+    mf.vd.listLight->setElement(slot.slot, osg::Vec4f(eye));
+    mf.vd.listLightSize->setElement(slot.slot, float(size));
+    mf.vd.filterScale->setElement(slot.slot, osg::Vec2f(penumbraScale(slot.pass.frustum, light.type, light.size)));
+    mf.vd.listSoftSamples->set(int(mf.settings.softSamples));
+    mf.eye.listSoft = true;
+}
+
 /** The triangle-list pass of one slot (after its depth pass): built unless its lists still
  *  hold what this frame would build, and bound for the eye pass. */
 void cullTriangleListPass(ModeFrame& mf, SlotCull& slot)
@@ -169,6 +198,7 @@ void cullTriangleListPass(ModeFrame& mf, SlotCull& slot)
     // The counts of a finished build come back through the eye pass of a later frame.
     if (slot.pass.listPass->countPending()) slot.pass.listPass->getPollNode()->accept(mf.cv);
     bindLists(mf, slot.pass, slot.slot, slot.light);
+    bindSoftLight(mf, slot);
 }
 
 /** HybridEdgeMask: the slot's silhouette edges drawn into its silhouette map
@@ -215,6 +245,12 @@ public:
             mf.vd.exactBegin->accept(mf.cv);
             mf.vd.exactEnd->accept(mf.cv);
             mf.stats.silhouettePixels = mf.vd.exactCounter->getLastValue();
+            if (frame.sizedLights && mf.stats.silhouettePixels >= 0)
+            {
+                // Soft frames count the penumbra pixels that cast rays (and hard slots' silhouette pixels).
+                mf.stats.penumbraPixels = mf.stats.silhouettePixels;
+                mf.stats.shadowRays = mf.stats.penumbraPixels * (long long)mf.settings.softSamples;
+            }
         }
         mf.eye.edgeMasks = mf.settings.hybridEdgeMask;
     }

@@ -45,6 +45,7 @@ struct PassSettings
     unsigned int debugLight = 0;
     SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2; ///< the map modes'
     unsigned int filterWindow = 1;                                                        ///< FILTER_PCF's N
+    unsigned int softSamples = 64; ///< HYBRID's shadow rays per penumbra pixel (SoftSamples)
     SilhouetteShadowTechnique::Tuning tuning;
     unsigned int listSlots = 1;  ///< slots that can have triangle lists
     bool recordingStats = false; ///< setStats() has a live target

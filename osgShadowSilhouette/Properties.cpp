@@ -211,6 +211,11 @@ std::vector<PropertyInfo> filterRows()
          "every light's size for the soft filters: a sphere's radius, or a directional light's angular radius",
          "0: hard shadows; a light's own size, the float user value `ShadowLightSize` on its `osg::Light` "
          "or `osg::LightSource`, wins (a directional light's below 45 degrees; others warn and cast hard)"},
+        {OSS_PROPERTY(SoftSamples), P::UINT, 64, 256, 1, 1024, "", {},
+         "HYBRID (triangle lists) under a light with a size: the shadow rays cast from each penumbra pixel "
+         "toward the light, each tested against the caster triangles of every texel it crosses",
+         "the answer converges to the exact visibility as it grows "
+         "([docs/soft-shadows.md](docs/soft-shadows.md#hybrid-exact-penumbrae-shadow-rays-through-the-triangle-lists))"},
     };
 }
 

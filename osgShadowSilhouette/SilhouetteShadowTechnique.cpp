@@ -103,8 +103,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _perPixelLighting(copy._perPixelLighting), _debugView(copy._debugView), _debugLight(copy._debugLight),
       _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _hybridEdgeMask(copy._hybridEdgeMask),
       _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _filter(copy._filter),
-      _filterWindow(copy._filterWindow), _lightSize(copy._lightSize), _tuning(copy._tuning),
-      _warnings(new detail::WarningLog)
+      _filterWindow(copy._filterWindow), _lightSize(copy._lightSize), _softSamples(copy._softSamples),
+      _tuning(copy._tuning), _warnings(new detail::WarningLog)
 {
 }
 
@@ -259,6 +259,11 @@ void SilhouetteShadowTechnique::setLightSize(float size)
     if (acceptValue("LightSize", size, _lightSize)) _lightSize = size;
 }
 
+void SilhouetteShadowTechnique::setSoftSamples(unsigned int k)
+{
+    if (acceptValue("SoftSamples", k, _softSamples)) _softSamples = k;
+}
+
 bool SilhouetteShadowTechnique::usesDepthPrepass(Mode mode, bool triangleLists, std::size_t triangles,
                                                  unsigned int slots, double viewportPixels) const
 {
@@ -291,6 +296,8 @@ void SilhouetteShadowTechnique::recordStatistics(const Statistics& stats)
     if (stats.volumeOverdraw() >= 0.0) target->setAttribute(frame, STATS_VOLUME_OVERDRAW, stats.volumeOverdraw());
     target->setAttribute(frame, STATS_BLOCKERS_SKIPPED, stats.blockersSkipped);
     target->setAttribute(frame, STATS_SILHOUETTE_EDGES, stats.silhouetteEdges);
+    if (stats.penumbraPixels >= 0) target->setAttribute(frame, STATS_PENUMBRA_PIXELS, double(stats.penumbraPixels));
+    if (stats.shadowRays >= 0) target->setAttribute(frame, STATS_SHADOW_RAYS, double(stats.shadowRays));
 }
 
 void SilhouetteShadowTechnique::warnOnce(int key, const std::string& message) const
@@ -434,6 +441,7 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
     cullReceivers(cv, vd, vd.receiverPassStateSet.get());
     Statistics stats;
     const std::vector<FoundLight> lights = cullLights(cv, vd, stats);
+    for (const FoundLight& found : lights) frame.sizedLights = frame.sizedLights || found.description.size > 0.0;
     stats.effectiveMode = frame.mode;
     _renderedMode = int(frame.mode);
     if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
@@ -503,6 +511,8 @@ SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::ve
     budget.cubeFaces = frame.mode != SHADOW_VOLUME; // the volumes reach every direction
     if (frame.mode == SHADOW_MAP || (frame.mode == SILHOUETTE_MAP && _filter == FILTER_SILHOUETTE))
         budget.faceMarginTexels = detail::filterReachTexels(_filter, _filterWindow);
+    // HYBRID's shadow rays to a light with a size reach as far as PCSS's taps.
+    if (frame.mode == HYBRID && frame.sizedLights) budget.faceMarginTexels = detail::filterReachTexels(FILTER_PCSS, 1);
     SlotPlan plan = detail::planSlots(frame, lights, budget, warner(), stats.lightsSkipped);
     frame.slotsInUse = plan.slotsInUse;
     return plan;
@@ -528,6 +538,7 @@ detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) cons
     s.debugLight = _debugLight;
     s.filter = _filter;
     s.filterWindow = _filterWindow;
+    s.softSamples = _softSamples;
     s.tuning = _tuning;
     s.listSlots = listSlots();
     s.recordingStats = _stats.valid();
@@ -550,9 +561,11 @@ void SilhouetteShadowTechnique::warnFilterMode(Mode mode) const
     // FILTER_PCF and FILTER_PCSS are SHADOW_MAP's, FILTER_SILHOUETTE is SILHOUETTE_MAP's.
     const Mode owner = _filter == FILTER_SILHOUETTE ? SILHOUETTE_MAP : SHADOW_MAP;
     if (_filter == FILTER_PCF_2X2 || mode == owner) return;
-    warnOnce(detail::WARN_FILTER_MODE, "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) +
-                                           " applies to " + (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") +
-                                           " only; mode " + modeName(mode) + " renders its own hard shadows");
+    warnOnce(detail::WARN_FILTER_MODE,
+             "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) + " applies to " +
+                 (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") + " only; mode " + modeName(mode) +
+                 " renders its own " +
+                 (mode == HYBRID ? "shadows (soft by its shadow rays under a light with a size)" : "hard shadows"));
 }
 
 void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)

@@ -47,6 +47,10 @@ void createListUniforms(ViewData& vd, unsigned int slots)
         vd.listPerspective->setElement(slot, 0);
     }
     vd.listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
+    vd.listLight = new osg::Uniform(osg::Uniform::FLOAT_VEC4, shader::LIST_LIGHT, slots);
+    vd.listLightSize = new osg::Uniform(osg::Uniform::FLOAT, shader::LIST_LIGHT_SIZE, slots);
+    vd.listSoftSamples = new osg::Uniform(shader::LIST_SOFT_SAMPLES, 64);
+    vd.listEyeToPattern = new osg::Uniform(shader::LIST_EYE_TO_PATTERN, osg::Matrixf());
     vd.lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
 }
 
@@ -86,7 +90,8 @@ osg::ref_ptr<ViewData> createViewData(const ViewLayout& layout)
     for (osg::Uniform* u :
          {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(), vd->maskLight.get(),
           samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->filterScale.get(),
-          vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get()})
+          vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get(),
+          vd->listLight.get(), vd->listLightSize.get(), vd->listSoftSamples.get(), vd->listEyeToPattern.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
@@ -143,6 +148,9 @@ void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::Bounding
         const osg::Vec3d centre = bound.center() * worldToEye;
         const double scale = osg::Matrixd::transform3x3(osg::Vec3d(1.0, 0.0, 0.0), worldToEye).length();
         vd.listRayFrame->set(osg::Vec4f(centre, float(double(shadowRayOffset) * bound.radius() * scale)));
+        const double cell = shader::LIST_PATTERN_CELL * bound.radius();
+        vd.listEyeToPattern->set(
+            osg::Matrixf(osg::Matrixd::inverse(worldToEye) * osg::Matrixd::scale(1.0 / cell, 1.0 / cell, 1.0 / cell)));
         vd.lookupBiasFrame->set(osg::Vec4f(centre, float(double(shader::LOOKUP_BIAS) * bound.radius() * scale)));
     }
     else
@@ -192,6 +200,7 @@ void resetSlots(ViewData& vd, unsigned int capacity, osg::Texture2D* litTexture)
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
         vd.filterScale->setElement(slot, osg::Vec2f());
+        vd.listLightSize->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;
         vd.slotSkipped[slot] = false;
     }

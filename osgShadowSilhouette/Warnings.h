@@ -36,6 +36,7 @@ enum WarningKey
     WARN_SCREEN_VISIBILITY,
     WARN_BLENDED_VISIBILITY,
     WARN_FILTER_MODE,
+    WARN_STENCIL_SOFT,
 };
 
 /** Raises warning @p key with @p message (the technique's warnOnce()). */

@@ -232,6 +232,7 @@ int main(int argc, char** argv)
                     "depth_prepass=%d list_block_heads=%d slots_skipped=%u blended_round=%d\n",
                     s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled,
                     s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0, s.slotsSkipped, s.blendedRound ? 1 : 0);
+        std::printf("penumbra_pixels_cast=%lld shadow_rays=%lld\n", s.penumbraPixels, s.shadowRays);
     }
 
     if (!options.classes.empty() && technique)

@@ -107,7 +107,10 @@ void main()
 #ifdef OSS_DEBUG_CLASSES
     int slot = oss_shadowSlotOf(n);
     vec2 c = slot < 0 ? vec2(1.0, 0.0) : oss_shadowSlotClass(slot, oss_eyePosition);
-    gl_FragColor = vec4(oss_classColor(c.y > 0.5, facing && c.x >= 0.5).rgb, oss_shadedAlpha());
+    // HYBRID under a light with a size: yellow where its rays find a penumbra (c.y 2).
+    vec3 penumbra = vec3(1.0, 1.0, 0.0);
+    gl_FragColor = vec4(facing && c.y > 1.5 ? penumbra : oss_classColor(c.y > 0.5, facing && c.x >= 0.5).rgb,
+                        oss_shadedAlpha());
 #else
     // The term first, outside the branch: a filter takes derivatives.
     float term = oss_shadowTerm(n, oss_eyePosition);

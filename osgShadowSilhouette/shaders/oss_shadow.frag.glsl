@@ -9,7 +9,7 @@
 // Names are kept in sync with osgShadowSilhouette/ShaderConstants.
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS, OSS_SILHOUETTE_MAP, OSS_CUBE_FACES)
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_LIGHT_FACES, OSS_HYBRID_EDGES, OSS_SKIPPED_SLOTS, OSS_BIAS_BAND, OSS_LIST_SOFT)
 #pragma import_defines(OSS_SCREEN_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS, OSS_FILTER_SILHOUETTE)
 
 uniform int oss_numLights;                          // lights lit by the receiver shading
@@ -115,10 +115,70 @@ float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
 #define OSS_MAP_TERM(s, p) oss_silhouetteFilterTerm(s, oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#elif defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
+#define OSS_MAP_TERM(s, p) oss_listSizedTerm(s, p).x
 #elif defined(OSS_TRIANGLE_LISTS)
 #define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p, true)
 #else
 #define OSS_MAP_TERM(s, p) OSS_PCF_TERM(s, p)
+#endif
+
+#if defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
+// HYBRID under a light with a size (docs/soft-shadows.md): the penumbra class and its rays.
+uniform float oss_listLightSize[OSS_MAX_SHADOW_SLOTS]; // 0: the slot's light is a point (hard)
+uniform vec2 oss_filterScale[OSS_MAX_SHADOW_SLOTS];    // footprint radius per unit of depth (penumbraScale())
+vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition);
+const float OSS_CONE_MAX_TEXELS = 48.0; // ShaderConstants: LIST_CONE_MAX_TEXELS
+
+// Whether one gather of slot s's depth map, `o` texels from the point (window position t),
+// holds a sample nearer to the light than both the rays' cone there (a sample rho texels
+// away can meet a ray only nearer than rho / perDepth of depth) and the receiver's plane
+// (slope) extended to it, less the lookup bias.
+bool oss_coneTap(int s, vec3 t, vec2 o, vec2 size, float perDepth, vec2 slope, float bias)
+{
+    float rho = max(0.0, length(o) - 1.5); // the nearest of the gather's four samples
+    float band = abs(slope.x) / size.x + abs(slope.y) / size.y;
+    float cone = t.z - rho / perDepth, plane = t.z + dot(slope, o / size) - band;
+    vec4 lit = textureGather(oss_shadowMap[s], t.xy + o / size, min(cone, plane) - bias);
+    return rho <= perDepth * t.z && any(lessThan(lit, vec4(0.5)));
+}
+
+// The blocker search of the penumbra class: whether a depth sample around eye-space point p
+// within the footprint of the rays from p to slot s's light can meet one of them
+// (oss_coneTap()). Squares of 4 x 4 gathers, each twice as wide as the one before (4, 8, 16,
+// 32, 64 texels from the point): every sample within 4 texels, and a blocker whose own
+// footprint is r texels wide is sampled at spacing r / 2 or finer, up to the footprint of a
+// blocker at the map's near plane (at most OSS_CONE_MAX_TEXELS).
+bool oss_coneBlocked(int s, vec4 p, vec2 slope)
+{
+    vec4 c = oss_eyeToShadow[s] * p;
+    if (c.w <= 0.0) return false;
+    vec3 t = c.xyz / c.w;
+    float bias = oss_lookupBias(oss_eyeToShadow[s], c, p);
+    vec2 size = vec2(textureSize(oss_shadowMap[s], 0));
+    float perDepth = max(oss_filterScale[s].x * size.x, 1e-6); // footprint texels per unit of depth
+    float reach = min(perDepth * t.z, OSS_CONE_MAX_TEXELS) + 1.5;
+    bool blocked = false;
+    for (int level = 0; level < 5 && !blocked; ++level)
+    {
+        float side = 4.0 * exp2(float(level));
+        for (int i = 0; i < 16 && !blocked && (level == 0 || side < 2.0 * reach); ++i)
+            blocked = oss_coneTap(s, t, (vec2(float(i % 4), float(i / 4)) - 1.5) * (side / 2.0), size, perDepth, slope, bias);
+    }
+    return blocked;
+}
+
+// Slot s's term under the lists (x) and its class (y: 0 the map's answer, 1 resolved exactly,
+// 2 the rays of a light with a size); a slot whose light has no size keeps the hard term.
+vec2 oss_listSizedTerm(int s, vec4 p)
+{
+    vec4 c = oss_eyeToShadow[s] * p;
+    vec2 slope = oss_depthSlope(c.xyz / (c.w > 0.0 ? c.w : 1.0)); // uniform control flow
+    float pcf = OSS_PCF_TERM(s, p);
+    if (oss_listLightSize[s] <= 0.0)
+        return vec2(oss_listTerm(s, pcf, p, true), oss_listResolves(s, pcf, p) ? 1.0 : 0.0);
+    return oss_listSoftTerm(s, pcf, oss_coneBlocked(s, p, slope), p);
+}
 #endif
 
 #ifdef OSS_CUBE_FACES
@@ -385,6 +445,9 @@ vec2 oss_termClass(float v)
 #define OSS_SLOT_CLASS(s, p) oss_termClass(OSS_MAP_TERM(s, p))
 #elif defined(OSS_SILHOUETTE_MAP)
 #define OSS_SLOT_CLASS(s, p) oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
+#elif defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
+vec2 oss_softClass(vec2 c) { return vec2(c.y > 1.5 ? c.x : step(0.5, c.x), c.y); }
+#define OSS_SLOT_CLASS(s, p) oss_softClass(oss_listSizedTerm(s, p))
 #elif defined(OSS_TRIANGLE_LISTS)
 vec2 oss_listClass(int s, vec4 eyePosition)
 {

@@ -9,7 +9,7 @@
 //
 // List buffer layout (uints, G the grid size): [0] node count, [1] triangle count, [2] 1 when
 // any triangle reached the map, listed or not (the technique keeps the slot in the eye pass
-// then), [3] unused; G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity
+// then), [3] the nearest depth listed (1 - z, or 1/w: grows toward the light; 0: none); G*G heads (first node + 1, 0: empty list); G*G counts; nodeCapacity
 // (even) nodes of (triangle, next node + 1); triangleCapacity triangles of three vec4 (x0 y0 x1 y1)
 // (x2 y2 q0 q1) (q2 cut 0 0) with q = z for an orthographic light, -1/w for a perspective one
 // (both grow away from the light and are linear in texture-space x, y); cut is 1 for an
@@ -114,6 +114,10 @@ void main()
 #endif
     oss_list[base + 10u] = 0u;
     oss_list[base + 11u] = 0u;
+    // The nearest depth listed, for the soft shadows' rays (no caster lies nearer): as a
+    // positive float that grows toward the light, whose bits order as the floats do.
+    float nearest = ortho ? 1.0 - min(min(t0.z, t1.z), t2.z) : max(max(1.0 / c0.w, 1.0 / c1.w), 1.0 / c2.w);
+    atomicMax(oss_list[3], floatBitsToUint(max(nearest, 0.0)));
 
     vec2 margin = 0.5 / oss_listGridSize + 1e-6;
     lo = clamp(lo - margin, vec2(0.0), vec2(1.0)) * 2.0 - 1.0;

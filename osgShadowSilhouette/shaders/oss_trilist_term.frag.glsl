@@ -8,7 +8,7 @@
 // texture-space x, y and lies nearer to the light. Other pixels keep the shadow map's answer.
 // Linked into the receiver program; empty unless OSS_TRIANGLE_LISTS is defined.
 
-#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT, OSS_GLSL_430)
+#pragma import_defines(OSS_TRIANGLE_LISTS, OSS_MAX_SHADOW_LIGHTS, OSS_MAX_SHADOW_SLOTS, OSS_MAX_LIST_SLOTS, OSS_HYBRID_EDGES, OSS_LIST_IMAGES, OSS_LIST_BLOCK_HEADS, OSS_COUNT_EXACT, OSS_LIST_SOFT, OSS_GLSL_430)
 // Left out of the programs of a context older than GL 4.3 (no comment on a pragma line: OSG
 // reads every word there as a define).
 #pragma requires(OSS_GLSL_430)
@@ -268,6 +268,218 @@ bool oss_listResolves(int s, float pcf, vec4 eyePosition)
     vec4 p = oss_listPoint(s, eyePosition);
     return p.w > 0.0 && oss_listUncertain(s, pcf, eyePosition);
 }
+
+#ifdef OSS_LIST_SOFT
+// Soft shadows (docs/soft-shadows.md, "HYBRID: exact penumbrae"): at the pixels the blocker
+// search of oss_shadow.frag.glsl classifies as penumbra, oss_listSoftSamples shadow rays
+// toward the light's disc or cone, each tested against the caster triangles of every grid
+// texel its path crosses in the light's texture space, so that no caster a ray meets is
+// missed; the visibility is the share of rays that reach the light.
+uniform vec4 oss_listLight[OSS_MAX_SHADOW_SLOTS];      // eye space: (toward the light, 0) or (position, 1)
+uniform float oss_listLightSize[OSS_MAX_SHADOW_SLOTS]; // radius; directional: 1 - cos(angular radius); 0: hard
+uniform int oss_listSoftSamples;
+uniform mat4 oss_listEyeToPattern; // eye space -> world cells of 1e-3 of the scene's radius
+const int OSS_MAX_WALK_TEXELS = 1024;
+
+// A 32-bit integer hash (Wellons' lowbias32).
+uint oss_hash(uint x)
+{
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16u);
+}
+
+// Whether segment a + t d (t in [0, 1]; light texture x, y and the lists' depth q) meets the
+// triangle v0 v1 v2 nearer to the light than `limit` (Moller and Trumbore 1997: the
+// coordinates are an affine image of the light's view, in which the ray is straight).
+bool oss_segmentHits(vec3 a, vec3 d, float limit, vec3 v0, vec3 v1, vec3 v2)
+{
+    vec3 e1 = v1 - v0, e2 = v2 - v0;
+    vec3 pv = cross(d, e2);
+    float det = dot(e1, pv);
+    vec3 tv = a - v0, qv = cross(tv, e1);
+    float inv = det != 0.0 ? 1.0 / det : 0.0;
+    float u = dot(tv, pv) * inv, v = dot(d, qv) * inv, t = dot(e2, qv) * inv;
+    return det != 0.0 && u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t >= 0.0 && t <= 1.0 && a.z + t * d.z < limit;
+}
+
+// One node of a texel's list of slot s (node: its index + 1, advanced to the next; 0 past
+// the end) against segment a + t d: 0 an opaque triangle meets it, 2 an alpha-tested one
+// (its cut-outs are in the depth map), 1 neither.
+int oss_nodeBlocks(int s, inout uint node, uvec3 offsets, vec3 a, vec3 d, float limit)
+{
+    if (node == 0u || node > oss_listCapacity[s].x)
+    {
+        node = 0u;
+        return 1;
+    }
+    uint n = node - 1u;
+    uvec4 pair = oss_listData4(s, offsets.y + (n >> 1u));
+    uvec2 entry = (n & 1u) != 0u ? pair.zw : pair.xy; // (triangle, next node + 1)
+    node = entry.y;
+    uint b = offsets.z + 3u * entry.x;
+    vec4 p0 = uintBitsToFloat(oss_listData4(s, b)), p1 = uintBitsToFloat(oss_listData4(s, b + 1u));
+    uvec4 third = oss_listData4(s, b + 2u);
+    bool hit = oss_segmentHits(a, d, limit, vec3(p0.xy, p1.z), vec3(p0.zw, p1.w), vec3(p1.xy, uintBitsToFloat(third.x)));
+    return hit ? (third.y == 0u ? 0 : 2) : 1;
+}
+
+// Two answers of oss_nodeBlocks() as one: blocked wins, then alpha-tested only.
+int oss_blocks(int result, int r)
+{
+    return result == 0 || r == 0 ? 0 : max(result, r);
+}
+
+// What grid texel `cell` of slot s lists on segment a + t d (oss_nodeBlocks()). Four nodes a
+// loop iteration, as four texels in oss_rayWalk(): llvmpipe ends a shader invocation's loops
+// after 65535 iterations in all (its loop limiter), which a penumbra pixel's rays taken one
+// node and one texel at a time can exceed.
+int oss_cellBlocks(int s, uint cell, uvec3 offsets, vec3 a, vec3 d, float limit)
+{
+    uint grid = offsets.x;
+    uint count = oss_listData(s, 4u + grid * grid + cell), node = oss_listData(s, 4u + cell);
+    int result = 1;
+    for (uint steps = 0u; steps < count && node != 0u && result != 0; steps += 4u)
+    {
+        result = oss_blocks(result, oss_nodeBlocks(s, node, offsets, a, d, limit));
+        result = oss_blocks(result, oss_nodeBlocks(s, node, offsets, a, d, limit));
+        result = oss_blocks(result, oss_nodeBlocks(s, node, offsets, a, d, limit));
+        result = oss_blocks(result, oss_nodeBlocks(s, node, offsets, a, d, limit));
+    }
+    return result;
+}
+
+// One step of oss_rayWalk(): texel `cell` of slot s tested if `test` and inside the grid,
+// then the next texel the segment crosses.
+int oss_walkStep(int s, inout ivec2 cell, inout vec2 tMax, vec4 steps, uvec3 offsets, vec3 a, vec3 d, float limit,
+                 bool test)
+{
+    bool inside = all(greaterThanEqual(cell, ivec2(0))) && all(lessThan(cell, ivec2(int(offsets.x))));
+    int r = test && inside ? oss_cellBlocks(s, uint(cell.y) * offsets.x + uint(cell.x), offsets, a, d, limit) : 1;
+    bool alongX = tMax.x < tMax.y;
+    cell += alongX ? ivec2(int(steps.x), 0) : ivec2(0, int(steps.y));
+    tMax += alongX ? vec2(steps.z, 0.0) : vec2(0.0, steps.w);
+    return r;
+}
+
+// The shadow ray from a to b (slot s's light texture space: x, y, q), walked over every grid
+// texel its projection crosses (Amanatides and Woo 1987), four a loop iteration: 0 blocked,
+// 1 free, 2 only alpha-tested triangles met. Texels outside the grid list nothing.
+int oss_rayWalk(int s, vec3 a, vec3 b, float limit)
+{
+    uint grid = oss_listCapacity[s].z;
+    uint nodes = (4u + 2u * grid * grid) / 4u; // in vec4s
+    uvec3 offsets = uvec3(grid, nodes, nodes + oss_listCapacity[s].x / 2u);
+    vec2 ga = a.xy * float(grid), d = (b.xy - a.xy) * float(grid);
+    ivec2 cell = ivec2(floor(ga)), last = ivec2(floor(ga + d));
+    vec2 inv = vec2(d.x != 0.0 ? 1.0 / d.x : 1e30, d.y != 0.0 ? 1.0 / d.y : 1e30);
+    vec4 steps = vec4(sign(d), abs(inv)); // the step per axis, and the segment's share per texel
+    vec2 tMax = (vec2(cell) + max(steps.xy, vec2(0.0)) - ga) * inv;
+    tMax = vec2(d.x != 0.0 ? tMax.x : 1e30, d.y != 0.0 ? tMax.y : 1e30);
+    int texels = min(abs(last.x - cell.x) + abs(last.y - cell.y) + 1, OSS_MAX_WALK_TEXELS);
+    int result = 1;
+    vec3 ab = b - a;
+    for (int i = 0; i < texels && result != 0; i += 4)
+    {
+        result = oss_blocks(result, oss_walkStep(s, cell, tMax, steps, offsets, a, ab, limit, result != 0));
+        result = oss_blocks(result, oss_walkStep(s, cell, tMax, steps, offsets, a, ab, limit, result != 0 && i + 1 < texels));
+        result = oss_blocks(result, oss_walkStep(s, cell, tMax, steps, offsets, a, ab, limit, result != 0 && i + 2 < texels));
+        result = oss_blocks(result, oss_walkStep(s, cell, tMax, steps, offsets, a, ab, limit, result != 0 && i + 3 < texels));
+    }
+    return result;
+}
+
+// Sample k of n of slot s's light seen from eye-space point p, stratified (a Fibonacci
+// spiral: the k-th of n equal areas of the disc or cone, the golden angle apart) and turned
+// and shifted by `jitter`: an eye-space direction (w 0, directional light; uniform in solid
+// angle) or point (w 1; uniform in area on the disc facing p), as the reference samples them.
+vec4 oss_lightSample(int s, vec3 p, int k, int n, vec2 jitter)
+{
+    vec4 light = oss_listLight[s];
+    float size = oss_listLightSize[s];
+    vec3 axis = normalize(light.w == 0.0 ? light.xyz : light.xyz - p);
+    vec3 b1 = normalize(cross(axis, abs(axis.x) < 0.5 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+    vec3 b2 = cross(axis, b1);
+    float u = (float(k) + jitter.x) / float(n);
+    float phi = 6.283185307 * fract(float(k) * 0.618033989 + jitter.y);
+    vec3 across = b1 * cos(phi) + b2 * sin(phi);
+    float cosA = 1.0 - u * size;
+    vec4 direction = vec4(axis * cosA + across * sqrt(max(0.0, 1.0 - cosA * cosA)), 0.0);
+    return light.w == 0.0 ? direction : vec4(light.xyz + across * (size * sqrt(u)), 1.0);
+}
+
+// The end, in slot s's light texture space (x, y, q), of the shadow ray from eye-space
+// `origin` (c0 its clip position) toward light sample `target`: the light's point, or where
+// the ray leaves the map's depth range toward the light (depth 0), whichever comes first.
+vec3 oss_rayEnd(int s, vec4 origin, vec4 c0, vec4 target)
+{
+    vec4 direction = target.w == 0.0 ? target : vec4(target.xyz - origin.xyz, 0.0);
+    vec4 cd = oss_eyeToShadow[s] * direction;
+    float t = target.w == 0.0 ? 1e30 : 1.0;
+    t = cd.z < 0.0 ? min(t, -c0.z / cd.z) : (target.w == 0.0 ? 0.0 : t);
+    vec4 e = c0 + t * cd;
+    return vec3(e.xy / e.w, oss_listSlotPerspective[s] != 0 ? -1.0 / e.w : e.z / e.w);
+}
+
+// Segment a -> b cut where its x, y leave the map's square (no texel lists beyond; a
+// inside) and where it passes `qNear`, the nearest depth of any triangle listed (header[3]).
+vec3 oss_clipToMap(vec3 a, vec3 b, float qNear)
+{
+    vec2 d = b.xy - a.xy;
+    vec2 exitT = vec2(d.x > 0.0 ? (1.0 - a.x) / d.x : (d.x < 0.0 ? -a.x / d.x : 1.0),
+                      d.y > 0.0 ? (1.0 - a.y) / d.y : (d.y < 0.0 ? -a.y / d.y : 1.0));
+    float nearT = b.z < qNear ? (qNear - a.z) / (b.z - a.z) : 1.0;
+    return a + clamp(min(min(exitT.x, exitT.y), nearT), 0.0, 1.0) * (b - a);
+}
+
+// The nearest depth, in the lists' terms (q), of any triangle slot s's lists hold, from
+// their header's fourth word (oss_trilist.geom.glsl); nothing listed: +infinity's stand-in.
+float oss_listNearest(int s, uint word)
+{
+    float value = uintBitsToFloat(word);
+    float q = oss_listSlotPerspective[s] != 0 ? -value : 1.0 - value;
+    return word == 0u ? 1e30 : q - (1e-4 + 1e-4 * abs(q)); // less a margin for the rounding
+}
+
+// The visibility of slot s's light at an eye-space position given its 2x2 PCF and whether
+// the blocker search found a blocker in the light's footprint (`penumbra`): 1 where nothing
+// is found (the map's lit class), else the share of oss_listSoftSamples rays that reach the
+// light; the PCF's hard answer where the lists cannot say (overflow, or a ray meeting only
+// alpha-tested triangles). x: the visibility; y: its class (0 the map's, 1 rays cast, all
+// blocked or none, 2 rays cast, some blocked: a penumbra). Call in uniform control flow.
+vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition)
+{
+    vec4 origin = oss_listRayOrigin(eyePosition);
+    vec4 p = oss_listPoint(s, origin);
+    bool walk = p.w > 0.0 && (penumbra || pcf < 1.0 || oss_listUncertain(s, pcf, eyePosition));
+#ifdef OSS_COUNT_EXACT
+    if (walk) atomicCounterIncrement(oss_exactFragments);
+#endif
+    uvec4 header = walk ? oss_listData4(s, 0u) : uvec4(0u);
+    bool overflow = header.x > oss_listCapacity[s].x || header.y > oss_listCapacity[s].y;
+    int n = walk && !overflow ? max(oss_listSoftSamples, 1) : 0;
+    uvec3 cellOf = uvec3(ivec3(floor((oss_listEyeToPattern * origin).xyz)));
+    uint h = oss_hash(cellOf.x ^ oss_hash(cellOf.y ^ oss_hash(cellOf.z ^ uint(s))));
+    vec2 jitter = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
+    float limit = p.z - (1e-4 + 1e-4 * abs(p.z)); // a triangle through the point itself does not count
+    vec4 c0 = oss_eyeToShadow[s] * origin;
+    float qNear = oss_listNearest(s, header.w);
+    int lit = 0;
+    bool cutOnly = false;
+    for (int k = 0; k < n; ++k)
+    {
+        vec3 b = oss_clipToMap(p.xyz, oss_rayEnd(s, origin, c0, oss_lightSample(s, origin.xyz, k, n, jitter)), qNear);
+        int r = oss_rayWalk(s, p.xyz, b, limit);
+        lit += r == 1 ? 1 : 0;
+        cutOnly = cutOnly || r == 2;
+    }
+    float v = n > 0 ? float(lit) / float(n) : pcf;
+    v = walk && (overflow || cutOnly) ? step(0.5, pcf) : v;
+    return vec2(v, walk ? (v > 0.0 && v < 1.0 ? 2.0 : 1.0) : 0.0);
+}
+#endif
 
 #else
 // (A translation unit may not be empty.)

@@ -9,6 +9,7 @@
 #include "GLTestSupport.h"
 #include "ModeBounds.h"
 #include "NotifyCapture.h"
+#include "SoftLights.h"
 
 #include <osg/LightSource>
 #include <osg/ValueObject>
@@ -47,22 +48,6 @@ const SoftCase kCases[] = {
     {"Spot03", "spot", 0.3, 0.06},
 };
 
-osshar::RenderOptions optionsFor(const std::string& light)
-{
-    osshar::RenderOptions options; // the default scene, its sun
-    osshar::LightArg arg;
-    if (light == "sun") return options;
-    arg.directional = false;
-    arg.vector = osg::Vec3d(-3.0, -4.0, 9.0);
-    if (light == "spot")
-    {
-        arg.spotDirection = osg::Vec3d(0.3, 0.4, -0.9);
-        arg.spotCutoff = 40.0;
-    }
-    options.lights.push_back(arg);
-    return options;
-}
-
 ossref::VisibilityComparison score(ShadowedRender& r, const ossref::VisibilityMask& reference)
 {
     const ossref::VisibilityComparison c = ossref::compareVisibility(reference, r.visibility());
@@ -88,7 +73,7 @@ long long fractionalPixels(const ossref::VisibilityMask& m)
 std::pair<ossref::VisibilityComparison, ossref::VisibilityComparison>
 hardAndFiltered(const SoftCase& c, const char* mode, SilhouetteShadowTechnique::Filter filter)
 {
-    ShadowedRender r(optionsFor(c.light), mode, MAP, W, H);
+    ShadowedRender r(osstest::softLightOptions(c.light), mode, MAP, W, H);
     EXPECT_TRUE(r.valid());
     if (!r.valid()) return {};
     const ossref::VisibilityMask reference = r.referenceVisibility(0, c.size);
