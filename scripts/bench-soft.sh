@@ -15,6 +15,7 @@
 #   scripts/bench-soft.sh                          # 5 scenes, maps 1024 and 2048 (about 25 min)
 #   MAPS="512 1024 2048 4096" scripts/bench-soft.sh # the full map-size sweep
 #   SCENES="default" LIGHTS=sun SUN_SIZES="0 2" MAPS=2048 OUT=/tmp/soft scripts/bench-soft.sh
+#   MAPPED="" UNMAPPED="hybrid:512" REF_DIR=/tmp/tmp.X OUT=/tmp/hybrid scripts/bench-soft.sh
 #     (OUT other than docs/bench: a subset; the tables go to $OUT/soft.md, docs stay alone)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,9 +28,10 @@ POINT_SIZES=${POINT_SIZES:-"0 0.1 0.3"} # radius, scene units
 MAPS=${MAPS:-"1024 2048"}
 # technique[:filter[:FilterWindow]], each at every map size; hybrid and volume once.
 # SoftShadowMap: osgShadow's, at its default softness (it has no light size).
-MAPPED=${MAPPED:-"shadowmap:pcf2x2 shadowmap:pcf:5 shadowmap:pcss silhouette:none silhouette:silhouette SoftShadowMap"}
-UNMAPPED=${UNMAPPED:-"hybrid:512 volume:512"}
-FRAMES=${FRAMES:-10}
+MAPPED=${MAPPED-"shadowmap:pcf2x2 shadowmap:pcf:5 shadowmap:pcss silhouette:none silhouette:silhouette SoftShadowMap"}
+UNMAPPED=${UNMAPPED-"hybrid:512 volume:512"}
+FRAMES=${FRAMES:-20}
+REF_DIR=${REF_DIR:-} # exact visibilities of an earlier run (its refvis-*.png) to read instead of casting
 SUN=${SUN:-"1 0.6 2"} # toward the sun
 W=512 H=384
 
@@ -56,7 +58,7 @@ run() {
   label=$filter
   [ -n "$window" ] && label="$filter$window"
   log="$TMP/run.txt"
-  ref="$TMP/refvis-$scene-$light-$size.png"
+  ref="${REF_DIR:-$TMP}/refvis-$scene-$light-$size.png"
   local refarg=(--compare-visibility "$ref")
   [ -f "$ref" ] || refarg=(--reference-visibility "$ref")
   # SHADOW_MAP's filters and SILHOUETTE_MAP's own; the other modes and the peer render as they are.

@@ -23,6 +23,11 @@ import sys
 from collections import defaultdict
 
 
+# One colour per technique in the plots (the labels' series would shift gnuplot's own cycle).
+PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
+           "#17becf"]
+
+
 def replace_block(path, name, body):
     """Replaces the lines between <!-- BEGIN name --> and <!-- END name --> (appends the block
     when the markers are missing), as scripts/replace-block.sh does."""
@@ -136,7 +141,7 @@ def headline(rows):
     """The largest size of each light at the largest map size, one line per scene and light."""
     techs = ["shadowmap pcf2x2", "shadowmap pcss", "silhouette silhouette", "SoftShadowMap", "hybrid", "volume"]
     names = ["SHADOW_MAP 2x2 PCF", "SHADOW_MAP PCSS", "SILHOUETTE_MAP FILTER_SILHOUETTE", "osgShadow SoftShadowMap",
-             "HYBRID (hard)", "SHADOW_VOLUME (hard)"]
+             "HYBRID (shadow rays, SoftSamples 64)", "SHADOW_VOLUME (hard)"]
     top_map = max(r["map"] for r in rows)
     head = "| scene | light | " + " | ".join(names) + " |\n" + "|---" * (2 + len(names)) + "|\n"
     body = ""
@@ -168,8 +173,9 @@ def plots(rows, out):
             gp.append(f"$t{i} << EOD")
             gp += [f"{max(r['pen'], 1e-4)} {r['ms']} {r['map'] or ''}" for r in pts]
             gp.append("EOD")
-            series.append(f"$t{i} using 1:2 with linespoints pt 7 title '{t}', "
-                          f"$t{i} using 1:2:3 with labels offset 1,0.5 notitle")
+            colour = PALETTE[i % len(PALETTE)]
+            series.append(f"$t{i} using 1:2 with linespoints pt 7 lc rgb '{colour}' title '{t}', "
+                          f"$t{i} using 1:2:3 with labels offset 1,0.5 tc rgb '{colour}' notitle")
         gp.append("plot " + ", ".join(series))
         open(base + ".gp", "w").write("\n".join(gp) + "\n")
         if shutil.which("gnuplot"):
