@@ -3,59 +3,29 @@
 #include <osgShadowSilhouette/PropertyRanges>
 #include <osgShadowSilhouette/ShaderConstants>
 
-#include "EyePass.h"
 #include "FrameData.h"
-#include "DepthMapPass.h"
 #include "LightPlanning.h"
+#include "SceneVisitors.h"
+#include "SharedResources.h"
+#include "SoftFilter.h"
+#include "TechniqueCull.h"
 #include "ViewState.h"
 #include "Warnings.h"
-#include "ModePass.h"
-#include "RenderLeaves.h"
-#include "ScreenVisibility.h"
-#include "SharedResources.h"
-#include "SceneVisitors.h"
-#include "SoftFilter.h"
 
-#include <osg/Depth>
-#include <osg/GLExtensions>
-#include <osg/Viewport>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
-#include <osgUtil/RenderStage>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 namespace osgShadowSilhouette {
 
 namespace {
 
-using detail::boundsOf;
-using detail::CasterSignatureVisitor;
-using detail::prunePrepass;
 using detail::TagShaderDefinesVisitor;
-using detail::FoundLight;
-using detail::FrameContext;
-using detail::LightPass;
-using detail::ModeFrame;
-using detail::ModePass;
-using detail::PassInputs;
-using detail::SlotPlan;
 using detail::ViewData;
 using namespace detail; // WarningKey
-
-/** The passes of @p mode: stateless, one for every view and thread. */
-ModePass& modePassFor(SilhouetteShadowTechnique::Mode mode)
-{
-    static const osg::ref_ptr<ModePass> passes[] = {
-        detail::createModePass(SilhouetteShadowTechnique::SHADOW_MAP),
-        detail::createModePass(SilhouetteShadowTechnique::SILHOUETTE_MAP),
-        detail::createModePass(SilhouetteShadowTechnique::HYBRID),
-        detail::createModePass(SilhouetteShadowTechnique::SHADOW_VOLUME)};
-    return *passes[mode >= 0 && mode < 4 ? mode : 0];
-}
 
 /** Whether @p value is one property @p name takes (Properties); a warning naming the
  *  property, the value, its range and the value kept otherwise. */
@@ -418,7 +388,7 @@ ViewData* SilhouetteShadowTechnique::createViewData()
 }
 
 // ---------------------------------------------------------------------------------------
-// Cull
+// Cull: the order of the passes (TechniqueCull.cpp holds each step)
 
 void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
 {
@@ -427,216 +397,17 @@ void SilhouetteShadowTechnique::cull(osgUtil::CullVisitor& cv)
         _shadowedScene->osg::Group::traverse(cv); // init() has not run yet (it runs in update)
         return;
     }
-    clampMapSizeToContext(cv);
-    ViewData& vd = *getViewData(cv);
-    FrameContext frame;
-    frame.mode = effectiveModeFor(cv);
-    // The eye pass's configuration, filled in as the frame is planned and applied at the end.
-    detail::EyePassPlan eye;
-    eye.mode = frame.mode;
-    eye.debugView = _debugView;
-    eye.perPixelLighting = _perPixelLighting;
-    // The receivers are culled first: a LightSource among them is known only afterwards. Their
-    // pass state set gets the stencil modes' lighting program once the method is known.
-    cullReceivers(cv, vd, vd.receiverPassStateSet.get());
-    Statistics stats;
-    const std::vector<FoundLight> lights = cullLights(cv, vd, stats);
-    for (const FoundLight& found : lights) frame.sizedLights = frame.sizedLights || found.description.size > 0.0;
-    stats.effectiveMode = frame.mode;
-    _renderedMode = int(frame.mode);
-    if (lights.empty()) warnOnce(WARN_NO_LIGHT, "no positional light (osg::LightSource) in the view; nothing to shadow");
-    else prepareFrame(cv, frame);
-    detail::warnAboutMissingLights(lights, _lightNum, _debugView != DEBUG_NONE, _debugLight, warner());
-    const SlotPlan plan = planSlots(frame, lights, stats);
-    stats.silhouetteCasters = static_cast<unsigned int>(frame.casterList.size());
-
+    detail::TechniqueCull frame(*this, cv);
+    // The receivers first: a LightSource among them is known only afterwards.
+    frame.cullReceivers();
+    frame.cullLights();
+    frame.planSlots();
     // The mode's passes: its method and configuration, its passes per slot, then over the eye.
-    const detail::PassSettings settings = passSettings(frame.mode);
-    detail::PassServices services;
-    services.warnOnce = warner();
-    services.cullReceivers = [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); };
-    services.applicationPrograms = [this]() { return hasApplicationPrograms(); };
-    services.warnAlphaTested = [log = _warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
-    ModeFrame mf{cv, vd, frame, stats, eye, settings, services};
-    ModePass& mode = modePassFor(frame.mode);
-    warnFilterMode(frame.mode);
-    mode.planFrame(mf);
-    prepareEyePass(mf);
-    cullShadowSlots(mf, mode, lights, plan);
-    mode.cullEyePasses(mf, lights, plan.slots);
-    detail::updateViewUniforms(cv, vd, lights, plan.slots, eye);
-    vd.maskLight->set(static_cast<int>(_debugLight));
-    detail::updateRayFrames(cv, vd, _shadowedScene ? _shadowedScene->getBound() : osg::BoundingSphere(),
-                            _shadowRayOffset);
-    finishEyePass(mf);
-}
-
-std::vector<FoundLight> SilhouetteShadowTechnique::cullLights(osgUtil::CullVisitor& cv, ViewData& vd, Statistics& stats)
-{
-    std::vector<int> refused;
-    std::vector<FoundLight> lights =
-        detail::collectLights(cv, refused, [&](const osg::Light& light, const std::string& refusal) {
-            _warnings->refusedLight(cv.getNodePath().empty() ? nullptr : cv.getNodePath().front(), light, refusal);
-        });
-    // The receiver shading lights only the lights found (oss_lightIndex); drawables under a
-    // program of their own, or all with UseDefaultShading false, are lit by OpenGL, which
-    // would spread a refused light's NaN: its GL light is turned off for them.
-    for (int num = 0; num < shader::MAX_SCENE_LIGHTS; ++num)
-    {
-        if (std::find(refused.begin(), refused.end(), num) != refused.end())
-            vd.receiverStateSet->setMode(GL_LIGHT0 + num, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-        else
-            vd.receiverStateSet->removeMode(GL_LIGHT0 + num);
-    }
-    for (FoundLight& found : lights)
-    {
-        std::string refusal;
-        found.description.size =
-            detail::lightSize(*found.light, _sizedLightSources.get(), found.description.type, _lightSize, refusal);
-        if (!refusal.empty()) _warnings->refusedLightSize(*found.light, refusal);
-    }
-    stats.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0;
-    stats.lightsFound = static_cast<unsigned int>(lights.size());
-    return lights;
-}
-
-SlotPlan SilhouetteShadowTechnique::planSlots(FrameContext& frame, const std::vector<FoundLight>& lights,
-                                              Statistics& stats) const
-{
-    detail::SlotBudget budget;
-    budget.lightNum = _lightNum;
-    budget.maxShadowLights = _maxShadowLights;
-    budget.mapSize = _shadowMapSize;
-    budget.slotLimit = slotCapacity(pairedSlots(frame.mode));
-    budget.cubeFaces = frame.mode != SHADOW_VOLUME; // the volumes reach every direction
-    if (frame.mode == SHADOW_MAP || (frame.mode == SILHOUETTE_MAP && _filter == FILTER_SILHOUETTE))
-        budget.faceMarginTexels = detail::filterReachTexels(_filter, _filterWindow);
-    // HYBRID's shadow rays to a light with a size reach as far as PCSS's taps.
-    if (frame.mode == HYBRID && frame.sizedLights) budget.faceMarginTexels = detail::filterReachTexels(FILTER_PCSS, 1);
-    SlotPlan plan = detail::planSlots(frame, lights, budget, warner(), stats.lightsSkipped);
-    frame.slotsInUse = plan.slotsInUse;
-    return plan;
-}
-
-detail::Warn SilhouetteShadowTechnique::warner() const
-{
-    return [log = _warnings.get()](int key, const std::string& message) { log->once(key, message); };
-}
-
-detail::PassSettings SilhouetteShadowTechnique::passSettings(Mode rendered) const
-{
-    detail::PassSettings s;
-    s.mode = _mode;
-    s.shadowMapSize = _shadowMapSize;
-    s.glGeneration = getGLGeneration();
-    s.polygonOffsetFactor = getEffectivePolygonOffsetFactor(rendered);
-    s.polygonOffsetUnits = _polygonOffsetUnits;
-    s.blockerCulling = _blockerCulling;
-    s.hybridEdgeMask = _hybridEdgeMask;
-    s.hybridMethod = _hybridMethod;
-    s.debugView = _debugView;
-    s.debugLight = _debugLight;
-    s.filter = _filter;
-    s.filterWindow = _filterWindow;
-    s.softSamples = _softSamples;
-    s.tuning = _tuning;
-    s.listSlots = listSlots();
-    s.recordingStats = _stats.valid();
-    s.shadowedScene = _shadowedScene;
-    s.silhouetteMapStateSet = _shared->silhouetteMapStateSet.get();
-    s.listStateSet = _shared->listStateSet.get();
-    s.listFrontOnlyStateSet = _shared->listFrontOnlyStateSet.get();
-    s.listedDrawables = _listedDrawables.get();
-    s.stencilProgram = _shared->stencilProgram.get();
-    s.volumeProgram = _shared->volumeProgram.get();
-    s.defaultSilhouetteTexture = _shared->defaultSilhouetteTexture.get();
-    s.defaultNeighbourhoodTexture = _shared->defaultNeighbourhoodTexture.get();
-    s.distanceMapStateSet = _shared->distanceMapStateSet.get();
-    s.defaultDistanceTexture = _shared->defaultDistanceTexture.get();
-    return s;
-}
-
-void SilhouetteShadowTechnique::warnFilterMode(Mode mode) const
-{
-    // FILTER_PCF and FILTER_PCSS are SHADOW_MAP's, FILTER_SILHOUETTE is SILHOUETTE_MAP's.
-    const Mode owner = _filter == FILTER_SILHOUETTE ? SILHOUETTE_MAP : SHADOW_MAP;
-    if (_filter == FILTER_PCF_2X2 || mode == owner) return;
-    warnOnce(detail::WARN_FILTER_MODE,
-             "Filter " + formatPropertyValue(*findProperty("Filter"), _filter) + " applies to " +
-                 (owner == SHADOW_MAP ? "SHADOW_MAP" : "SILHOUETTE_MAP") + " only; mode " + modeName(mode) +
-                 " renders its own " +
-                 (mode == HYBRID ? "shadows (soft by its shadow rays under a light with a size)" : "hard shadows"));
-}
-
-void SilhouetteShadowTechnique::prepareEyePass(ModeFrame& mf)
-{
-    osgUtil::CullVisitor& cv = mf.cv;
-    ViewData& vd = mf.vd;
-    const FrameContext& frame = mf.frame;
-    if (frame.stencil && !vd.stencil)
-        vd.stencil = new StencilShadowPasses(_shared->stencilProgram.get(), _shared->volumeProgram.get());
-    if (frame.stencil)
-        vd.receiverPassStateSet->setAttributeAndModes(_shared->stencilProgram.get(),
-                                                      osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-    else
-        vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
-    // The GLSL 4.30 shaders join the receivers' programs only where the context runs them.
-    const osg::GLExtensions* ext = cv.getState() ? osg::GLExtensions::Get(cv.getState()->getContextID(), false) : nullptr;
-    if (ext && ext->glVersion >= 4.3f)
-        vd.receiverStateSet->setDefine(shader::DEFINE_GLSL_430);
-    else
-        vd.receiverStateSet->removeDefine(shader::DEFINE_GLSL_430);
-    mf.stats.screenVisibility = detail::cullScreenVisibility(mf);
-    std::size_t casterTriangles = 0;
-    for (const Caster& caster : frame.casterList) casterTriangles += caster.mesh->getAdjacency().report.inputTriangles;
-    const osg::Viewport* eyeViewport = cv.getViewport();
-    mf.stats.depthPrepass =
-        usesDepthPrepass(frame.mode, frame.triangleLists, casterTriangles, std::max(1u, frame.slotsInUse),
-                         eyeViewport ? eyeViewport->width() * eyeViewport->height() : 0.0);
-    if (mf.stats.depthPrepass)
-        detail::cullDepthPrepass(cv, vd, [&](osg::StateSet* pass) { cullReceivers(cv, vd, pass); });
-    else
-        vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::DEPTH);
-}
-
-void SilhouetteShadowTechnique::cullShadowSlots(ModeFrame& mf, ModePass& mode, const std::vector<FoundLight>& lights,
-                                                const SlotPlan& plan)
-{
-    ViewData& vd = mf.vd;
-    const bool paired = pairedSlots(mf.frame.mode);
-    const unsigned int capacity = slotCapacity(paired);
-    mf.eye.slotCapacity = capacity;
-    // SILHOUETTE_MAP's eye pass reads neighbourhood maps (usampler2D), HYBRID's the edge masks.
-    osg::Texture2D* second = mode.defaultSecondMap(mf.settings);
-    std::vector<osg::Texture2D*> secondMaps(capacity, second ? second : _shared->defaultSilhouetteTexture.get());
-    osg::Texture2D* fallback = _shared->defaultSilhouetteTexture.get();
-    detail::resetSlots(vd, capacity, _shared->litTexture(mode.rawDepthMaps(mf.settings)));
-    // The second maps' units; in SHADOW_MAP they hold the depth maps bound above.
-    if (paired) detail::bindSecondMaps(vd, second ? secondMaps : std::vector<osg::Texture2D*>(), fallback);
-    for (std::size_t i = 0; i < lights.size(); ++i)
-    {
-        if (plan.slots[i] < 0) continue;
-        ++mf.stats.lightsShadowed;
-        cullLight(mf, mode, lights[i].description, static_cast<unsigned int>(plan.slots[i]), plan.frusta[i],
-                  plan.firstFaceSlot[i], secondMaps);
-    }
-    if (second) detail::bindSecondMaps(vd, secondMaps, fallback);
-}
-
-void SilhouetteShadowTechnique::finishEyePass(ModeFrame& mf)
-{
-    ViewData& vd = mf.vd;
-    detail::applyEyePassDefines(*vd.receiverStateSet, detail::eyePassDefines(mf.eye));
-    // A mask is 0 or 1: a blended scene (an alpha-tested tree that also blends) must not
-    // mix it with what lies behind. The alpha still reaches the scene's osg::AlphaFunc.
-    if (_debugView == DEBUG_SHADOW_MASK || _debugView == DEBUG_CLASSES || _debugView == DEBUG_VISIBILITY)
-        vd.receiverStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-    else
-        vd.receiverStateSet->removeMode(GL_BLEND);
-    cullProgramLinkCheck(mf.cv);
-    if (const osg::Viewport* viewport = mf.cv.getViewport())
-        mf.stats.viewportPixels = static_cast<unsigned int>(viewport->width() * viewport->height());
-    recordStatistics(mf.stats);
+    frame.planMode();
+    frame.prepareEyePass();
+    frame.cullShadowSlots();
+    frame.cullEyePasses();
+    frame.finishEyePass();
 }
 
 unsigned int SilhouetteShadowTechnique::slotCapacity(bool paired) const
@@ -655,88 +426,20 @@ unsigned int SilhouetteShadowTechnique::listSlots() const
     return std::min<unsigned int>(shader::MAX_LIST_SLOTS, slotCapacity(true));
 }
 
-void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, FrameContext& frame)
+void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, detail::FrameContext& frame)
 {
     detail::gatherFrame(cv, *_shadowedScene, *_meshCache, _maximumShadowDistance, frame);
     for (const osg::Drawable* drawable : frame.nonFinite) _warnings->nonFinite(*drawable);
 }
 
-void SilhouetteShadowTechnique::cullLight(ModeFrame& mf, ModePass& mode, const LightDescription& light,
-                                          unsigned int slot, const std::vector<LightFrustum>& frusta,
-                                          unsigned int firstFaceSlot, std::vector<osg::Texture2D*>& secondMaps)
-{
-    ViewData& vd = mf.vd;
-    if (!frusta.front().valid)
-    {
-        vd.passes[slot].frustum = LightFrustum();
-        ++mf.stats.lightsSkipped; // nothing can shadow what this view sees
-        return;
-    }
-    for (std::size_t k = 0; k < frusta.size(); ++k)
-    {
-        const unsigned int s = k == 0 ? slot : firstFaceSlot + static_cast<unsigned int>(k - 1);
-        vd.slotOwner->setElement(s, int(slot));
-        vd.slotCore->setElement(s, float(frusta[k].faceCore));
-        cullSlot(mf, mode, light, s, frusta[k], secondMaps[s]);
-    }
-}
-
-void SilhouetteShadowTechnique::cullSlot(ModeFrame& mf, ModePass& mode, const LightDescription& light,
-                                         unsigned int slot, const LightFrustum& frustum, osg::Texture2D*& secondMap)
-{
-    ViewData& vd = mf.vd;
-    LightPass& pass = vd.passes[slot];
-    detail::fitDepthMap(pass, slot, _shadowMapSize, mode.rawDepthMaps(mf.settings), *_shared->depthPassStateSet,
-                        _shadowedScene);
-    pass.frustum = frustum;
-    if (!mode.drawsMaps()) return; // volumes only, no map
-    vd.slotInUse[slot] = true;
-    detail::SlotCull cull{light, slot, pass, detail::cullDepthMap(mf, mode, pass, light), secondMap};
-    detail::bindDepthMap(vd, slot, pass.depthTexture.get());
-    mode.cullSlot(mf, cull);
-    // A cube face whose newest build (this light, these casters) drew no caster shadows
-    // nothing: the eye pass leaves it out. The counts come back a frame or two late; until
-    // then, and in every frame that rebuilds, the face is evaluated. Not the stencil passes.
-    const FrameContext& frame = mf.frame;
-    vd.slotSkipped[slot] = _tuning.skipEmptyFaces && !frame.stencil && frustum.faceCore > 0.0 &&
-                           (frame.triangleLists ? pass.listPass && pass.listPass->listedNothing()
-                                                : pass.samples->drewNothing());
-    if (vd.slotSkipped[slot]) ++mf.stats.slotsSkipped;
-    if (pass.samples->getEnabled() && pass.samples->pending()) pass.samples->getPollNode()->accept(mf.cv);
-}
-
-void SilhouetteShadowTechnique::clampMapSizeToContext(osgUtil::CullVisitor& cv)
-{
-    // GLExtensions holds GL_MAX_TEXTURE_SIZE once the context has been made current: no
-    // query here. Before that (the very first frame) nothing is clamped.
-    const osg::State* state = cv.getState();
-    const osg::GLExtensions* ext = state ? osg::GLExtensions::Get(state->getContextID(), false) : nullptr;
-    if (!ext || ext->maxTextureSize <= 0 || _shadowMapSize <= static_cast<unsigned int>(ext->maxTextureSize)) return;
-    warnOnce(WARN_CONTEXT_MAP_SIZE, "ShadowMapSize " + std::to_string(_shadowMapSize) +
-                                        " exceeds the context's GL_MAX_TEXTURE_SIZE (" +
-                                        std::to_string(ext->maxTextureSize) + "); clamped to it");
-    if (_properties.shadowMapSize == _shadowMapSize) _properties.shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
-    _shadowMapSize = static_cast<unsigned int>(ext->maxTextureSize);
-}
-
-void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, ViewData& vd, osg::StateSet* pass)
+void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, detail::ViewData& vd, osg::StateSet* pass)
 {
     detail::cullReceivers(cv, *_shadowedScene, vd, pass);
 }
 
-SilhouetteShadowTechnique::Mode SilhouetteShadowTechnique::effectiveModeFor(osgUtil::CullVisitor& cv) const
+detail::Warn SilhouetteShadowTechnique::warner() const
 {
-    const Mode mode = _mode;
-    if (mode != SHADOW_VOLUME && mode != HYBRID) return mode;
-    const osg::State* state = cv.getState();
-    const osg::GraphicsContext* gc = state ? state->getGraphicsContext() : nullptr;
-    const osg::GraphicsContext::Traits* traits = gc ? gc->getTraits() : nullptr;
-    if (!traits || traits->stencil > 0) return mode;
-    warnOnce(WARN_NO_STENCIL, std::string("Mode ") + modeName(mode) +
-                                  " needs a stencil buffer and the graphics context has none (call "
-                                  "osg::DisplaySettings::instance()->setMinimumNumStencilBits(8) before creating "
-                                  "it, or run osgviewer with --stencil); rendering SHADOW_MAP");
-    return SHADOW_MAP;
+    return [log = _warnings.get()](int key, const std::string& message) { log->once(key, message); };
 }
 
 } // namespace osgShadowSilhouette
