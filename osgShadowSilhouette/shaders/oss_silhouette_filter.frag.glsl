@@ -46,48 +46,74 @@ float oss_edgeVisibility(float d, float r, float f)
     return 1.0 - oss_discCut(d / max(r, 0.64 * f));
 }
 
-// One sample of the extended map at texel position u (texel centres at integers) for a
-// receiver at depth z: the visibility across the nearest edge for a penumbra of radius
-// `radius` (z - z_E) texels (0: the anti-aliased hard edge). zEdge: the edge's depth, or z
-// where the answer does not come from an edge in front of the point (no penumbra there).
-float oss_edgeSample(sampler2D depthMap, sampler2D distanceMap, vec2 u, float z, vec2 slope, vec2 size, float radius,
-                     float share, vec2 ux, vec2 uy, out float zEdge)
+// The boundary inside a cell: the bilinear interpolation of its four signed distances
+// (textureGather's order: (0,1), (1,1), (1,0), (0,0)) at the fraction f.
+float oss_cellDistance(vec4 dist, vec2 f)
 {
-    zEdge = z;
+    return mix(mix(dist.w, dist.z, f.x), mix(dist.x, dist.y, f.x), f.y);
+}
+
+// What the extended map holds around texel position u (texel centres at integers) for a
+// receiver at depth z: the 2x2 depth comparison and, where all four texels hold an edge,
+// the bilinear boundary d, its gradient g in texels, the edge's depth zE and the outside
+// texels' own depth tests.
+struct OssEdgeCell
+{
+    float pcf;
+    bool edge;
+    float d;
+    vec2 g;
+    float zE;
+    float litOutside;
+};
+
+OssEdgeCell oss_edgeCell(sampler2D depthMap, sampler2D distanceMap, vec2 u, float z, vec2 slope, vec2 size)
+{
+    OssEdgeCell cell;
     vec2 base = floor(u), f = u - base;
     vec2 at = (base + 1.0) / size;
-    // textureGather's order: (0,1), (1,1), (1,0), (0,0).
     vec4 depth = textureGather(depthMap, at, 0);
     vec4 dx = (vec4(0.0, 1.0, 1.0, 0.0) - f.x) / size.x;
     vec4 dy = (vec4(1.0, 1.0, 0.0, 0.0) - f.y) / size.y;
     vec4 plane = clamp(dx * slope.x + dy * slope.y, -OSS_SILDIST_MAX_PLANE_BIAS, OSS_SILDIST_MAX_PLANE_BIAS);
     vec4 lit = vec4(lessThanEqual(z + plane, depth));
     vec4 weight = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-    float pcf = dot(lit, weight);
+    cell.pcf = dot(lit, weight);
     vec4 dist = textureGather(distanceMap, at, 0);
-    if (any(greaterThan(abs(dist), vec4(0.5 * OSS_SILDIST_NO_EDGE))))
-        return pcf;
-    // The bilinear boundary, its gradient in texels and the edge's depth.
-    float d = mix(mix(dist.w, dist.z, f.x), mix(dist.x, dist.y, f.x), f.y);
-    vec2 g = vec2(mix(dist.z - dist.w, dist.y - dist.x, f.y), mix(dist.x - dist.w, dist.y - dist.z, f.x));
-    vec4 edgeDepth = textureGather(distanceMap, at, 1);
-    float zE = mix(mix(edgeDepth.w, edgeDepth.z, f.x), mix(edgeDepth.x, edgeDepth.y, f.x), f.y);
+    cell.edge = !any(greaterThan(abs(dist), vec4(0.5 * OSS_SILDIST_NO_EDGE)));
+    if (!cell.edge)
+        return cell;
+    cell.d = oss_cellDistance(dist, f);
+    cell.g = vec2(mix(dist.z - dist.w, dist.y - dist.x, f.y), mix(dist.x - dist.w, dist.y - dist.z, f.x));
+    cell.zE = oss_cellDistance(textureGather(distanceMap, at, 1), f);
     // Other casters still shadow: the outside texels' own depth tests.
     vec4 outside = vec4(lessThan(dist, vec4(0.0)));
     float outsideCount = dot(outside, vec4(1.0));
-    float litOutside = outsideCount > 0.0 ? dot(lit, outside) / outsideCount : 1.0;
+    cell.litOutside = outsideCount > 0.0 ? dot(lit, outside) / outsideCount : 1.0;
+    return cell;
+}
+
+// One sample: the visibility of a receiver at depth z across the cell's edge for a penumbra
+// of radius `radius` (z - z_E) texels (0: the anti-aliased hard edge), the sample's share of
+// the pixel's footprint being `share`. zEdge: the edge's depth, or z where the answer does
+// not come from an edge in front of the point (no penumbra there).
+float oss_edgeSample(OssEdgeCell cell, float z, float radius, float share, vec2 ux, vec2 uy, out float zEdge)
+{
+    zEdge = z;
+    if (!cell.edge)
+        return cell.pcf;
     // An edge behind the point cannot shadow it (Valient and Bujnak's rule): outside the
     // edge the outside texels' tests answer; on its casting side the point is shadowed only
     // where all four depth tests fail, by a caster nearer the light than the edge (any that
     // passes: the point lies on the edge's own caster beside its rim). A point on the
     // casting side whose four depth tests all pass is lit (a caster's own face, or in front).
-    if (zE >= z)
-        return d < 0.0 ? litOutside : (pcf > 0.0 ? 1.0 : 0.0);
-    if (d > 0.0 && pcf >= 1.0)
+    if (cell.zE >= z)
+        return cell.d < 0.0 ? cell.litOutside : (cell.pcf > 0.0 ? 1.0 : 0.0);
+    if (cell.d > 0.0 && cell.pcf >= 1.0)
         return 1.0;
-    zEdge = zE;
-    float footprint = share * max(abs(dot(g, ux)) + abs(dot(g, uy)), 1e-3);
-    return oss_edgeVisibility(d, radius * (z - zE), footprint) * litOutside;
+    zEdge = cell.zE;
+    float footprint = share * max(abs(dot(cell.g, ux)) + abs(dot(cell.g, uy)), 1e-3);
+    return oss_edgeVisibility(cell.d, radius * (z - cell.zE), footprint) * cell.litOutside;
 }
 
 float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePosition)
@@ -103,7 +129,8 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     t.z = min(t.z - oss_lookupBias(eyeToShadow, c, eyePosition), 1.0);
     float scale = oss_filterScale[s].x * size.x; // penumbra radius in texels per unit of depth
     float zE;
-    float centre = oss_edgeSample(depthMap, distanceMap, u, t.z, slope, size, scale, 1.0, ux, uy, zE);
+    OssEdgeCell here = oss_edgeCell(depthMap, distanceMap, u, t.z, slope, size);
+    float centre = oss_edgeSample(here, t.z, scale, 1.0, ux, uy, zE);
     float r = scale * (t.z - zE);
     if (r < OSS_SILDIST_SAMPLES_MIN_RADIUS)
         return centre;
@@ -115,14 +142,15 @@ float oss_silhouetteFilterTerm(int s, sampler2D depthMap, sampler2D distanceMap,
     // edges lie inside the penumbra (a caster thinner than it, touching silhouettes) the
     // samples see different edges, which one sample across the nearest edge cannot.
     float zEc;
-    float v = oss_edgeSample(depthMap, distanceMap, u, t.z, slope, size, scale / 3.0, 1.0 / 3.0, ux, uy, zEc) / 9.0;
+    float v = oss_edgeSample(here, t.z, scale / 3.0, 1.0 / 3.0, ux, uy, zEc) / 9.0;
     for (int k = 0; k < 6; ++k)
     {
         float a = 1.04719755 * float(k);
         // (At most SILDIST_SAMPLE_REACH texels away: within a cube face's margin.)
         vec2 offset = min(0.689 * r, OSS_SILDIST_SAMPLE_REACH) * vec2(cos(a), sin(a));
         float zk = t.z + dot(slope, offset / size), zEk;
-        float vk = oss_edgeSample(depthMap, distanceMap, u + offset, zk, slope, size, 0.385 * scale, 0.385, ux, uy, zEk);
+        OssEdgeCell cell = oss_edgeCell(depthMap, distanceMap, u + offset, zk, slope, size);
+        float vk = oss_edgeSample(cell, zk, 0.385 * scale, 0.385, ux, uy, zEk);
         v += vk * (8.0 / 54.0);
     }
     return v;
@@ -146,7 +174,7 @@ vec4 oss_distanceOverlay(sampler2D distanceMap, mat4 eyeToShadow, vec4 eyePositi
     vec2 u = (c.xy / c.w) * size - 0.5;
     vec2 base = floor(u), f = u - base;
     vec4 dist = textureGather(distanceMap, (base + 1.0) / size, 0);
-    float d = mix(mix(dist.w, dist.z, f.x), mix(dist.x, dist.y, f.x), f.y); // as the eye term reads it
+    float d = oss_cellDistance(dist, f); // as the eye term reads it
     float perPixel = fwidth(d);
     if (c.w <= 0.0 || any(greaterThan(abs(dist), vec4(0.5 * OSS_SILDIST_NO_EDGE))))
         return vec4(0.0);
