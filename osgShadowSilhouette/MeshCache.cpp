@@ -25,6 +25,13 @@ bool MeshCache::Signature::matches(const osg::Geometry& geometry) const
 {
     const osg::Array* array = geometry.getVertexArray();
     if (array != vertices || (array && array->getModifiedCount() != verticesModified)) return false;
+    return sameTopology(geometry);
+}
+
+bool MeshCache::Signature::sameTopology(const osg::Geometry& geometry) const
+{
+    const osg::Array* array = geometry.getVertexArray();
+    if (!array || !vertices || array->getNumElements() != vertexCount) return false;
     if (geometry.getNumPrimitiveSets() != primitives.size()) return false;
     for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
     {
@@ -40,6 +47,7 @@ MeshCache::Signature MeshCache::signatureOf(const osg::Geometry& geometry)
     Signature s;
     s.vertices = geometry.getVertexArray();
     s.verticesModified = s.vertices ? s.vertices->getModifiedCount() : 0;
+    s.vertexCount = s.vertices ? s.vertices->getNumElements() : 0;
     s.primitives.reserve(geometry.getNumPrimitiveSets());
     for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
     {
@@ -59,29 +67,48 @@ osg::ref_ptr<CachedMesh> MeshCache::build(const osg::Geometry& geometry) const
         keep = _keepHalfEdgeMesh;
     }
     osg::ref_ptr<CachedMesh> mesh = new CachedMesh;
-    if (keep) mesh->_halfEdgeMesh.reset(new HalfEdgeMesh);
-    buildMeshAdjacency(geometry, options, mesh->_adjacency, mesh->_halfEdgeMesh.get());
+    std::shared_ptr<HalfEdgeMesh> halfEdgeMesh(keep ? new HalfEdgeMesh : nullptr);
+    std::shared_ptr<MeshWelding> welding(new MeshWelding);
+    buildMeshAdjacency(geometry, options, mesh->_adjacency, halfEdgeMesh.get(), welding.get());
+    mesh->_halfEdgeMesh = std::move(halfEdgeMesh);
+    mesh->_welding = std::move(welding);
+    return mesh;
+}
+
+osg::ref_ptr<CachedMesh> MeshCache::refresh(const osg::Geometry& geometry, const CachedMesh& previous)
+{
+    if (!previous._welding) return nullptr;
+    osg::ref_ptr<CachedMesh> mesh = new CachedMesh;
+    if (!refreshMeshPositions(geometry, *previous._welding, previous._adjacency, mesh->_adjacency)) return nullptr;
+    mesh->_halfEdgeMesh = previous._halfEdgeMesh;
+    mesh->_welding = previous._welding;
     return mesh;
 }
 
 osg::ref_ptr<const CachedMesh> MeshCache::get(const osg::Geometry& geometry)
 {
+    osg::ref_ptr<const CachedMesh> previous; // the entry to refresh, if only positions changed
     {
         Lock lock(_mutex);
         auto it = _entries.find(&geometry);
-        if (it != _entries.end() && it->second.geometry.get() == &geometry &&
-            it->second.signature.matches(geometry))
-            return it->second.mesh;
+        if (it != _entries.end() && it->second.geometry.get() == &geometry)
+        {
+            if (it->second.signature.matches(geometry)) return it->second.mesh;
+            if (it->second.signature.sameTopology(geometry)) previous = it->second.mesh;
+        }
     }
     // taken before building, so that a change made meanwhile triggers another rebuild
     Signature signature = signatureOf(geometry);
-    osg::ref_ptr<const CachedMesh> mesh = build(geometry);
+    osg::ref_ptr<const CachedMesh> mesh;
+    if (previous) mesh = refresh(geometry, *previous);
+    const bool refreshed = mesh.valid();
+    if (!refreshed) mesh = build(geometry);
     Lock lock(_mutex);
     Entry& entry = _entries[&geometry];
     entry.geometry = &geometry;
     entry.signature = signature;
     entry.mesh = mesh;
-    ++_buildCount;
+    ++(refreshed ? _refreshCount : _buildCount);
     return mesh;
 }
 
@@ -249,4 +276,9 @@ std::size_t MeshCache::getBuildCount() const
     return _buildCount;
 }
 
+std::size_t MeshCache::getRefreshCount() const
+{
+    Lock lock(_mutex);
+    return _refreshCount;
+}
 }
