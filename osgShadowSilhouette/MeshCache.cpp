@@ -75,11 +75,14 @@ osg::ref_ptr<CachedMesh> MeshCache::build(const osg::Geometry& geometry) const
     return mesh;
 }
 
-osg::ref_ptr<CachedMesh> MeshCache::refresh(const osg::Geometry& geometry, const CachedMesh& previous)
+osg::ref_ptr<CachedMesh> MeshCache::refresh(const osg::Geometry& geometry, const CachedMesh& previous,
+                                            osg::ref_ptr<CachedMesh> spare)
 {
     if (!previous._welding) return nullptr;
-    osg::ref_ptr<CachedMesh> mesh = new CachedMesh;
-    if (!refreshMeshPositions(geometry, *previous._welding, previous._adjacency, mesh->_adjacency)) return nullptr;
+    // a spare of the same build has the same topology already: only positions are written
+    osg::ref_ptr<CachedMesh> mesh = spare.valid() ? spare.get() : new CachedMesh;
+    const MeshAdjacency& built = spare ? spare->_adjacency : previous._adjacency;
+    if (!refreshMeshPositions(geometry, *previous._welding, built, mesh->_adjacency)) return nullptr;
     mesh->_halfEdgeMesh = previous._halfEdgeMesh;
     mesh->_welding = previous._welding;
     return mesh;
@@ -88,23 +91,31 @@ osg::ref_ptr<CachedMesh> MeshCache::refresh(const osg::Geometry& geometry, const
 osg::ref_ptr<const CachedMesh> MeshCache::get(const osg::Geometry& geometry)
 {
     osg::ref_ptr<const CachedMesh> previous; // the entry to refresh, if only positions changed
+    osg::ref_ptr<CachedMesh> spare;          // a retired entry only we hold, to write into
     {
         Lock lock(_mutex);
         auto it = _entries.find(&geometry);
         if (it != _entries.end() && it->second.geometry.get() == &geometry)
         {
-            if (it->second.signature.matches(geometry)) return it->second.mesh;
-            if (it->second.signature.sameTopology(geometry)) previous = it->second.mesh;
+            Entry& entry = it->second;
+            if (entry.signature.matches(geometry)) return entry.mesh;
+            if (entry.signature.sameTopology(geometry)) previous = entry.mesh;
+            // Held by the entry alone, it can be reached by no one else: ours to write.
+            if (previous && entry.spare && entry.spare->referenceCount() == 1 &&
+                entry.spare->_welding == previous->_welding)
+                spare.swap(entry.spare);
         }
     }
     // taken before building, so that a change made meanwhile triggers another rebuild
     Signature signature = signatureOf(geometry);
-    osg::ref_ptr<const CachedMesh> mesh;
-    if (previous) mesh = refresh(geometry, *previous);
+    osg::ref_ptr<CachedMesh> mesh;
+    if (previous) mesh = refresh(geometry, *previous, spare);
     const bool refreshed = mesh.valid();
     if (!refreshed) mesh = build(geometry);
     Lock lock(_mutex);
     Entry& entry = _entries[&geometry];
+    const bool sameBuild = entry.mesh.valid() && entry.mesh->_welding == mesh->_welding;
+    entry.spare = sameBuild ? entry.mesh.get() : nullptr;
     entry.geometry = &geometry;
     entry.signature = signature;
     entry.mesh = mesh;

@@ -10,9 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <thread>
 
 using namespace osgShadowSilhouette;
 using namespace meshtest;
@@ -167,6 +169,74 @@ TEST(MeshRefresh, InwardPartsFollowThePositions)
     EXPECT_EQ(1u, cache->getRefreshCount());
     EXPECT_EQ(1u, mirrored->getAdjacency().inwardParts);
     expectSameMesh(mirrored->getAdjacency(), freshBuild(*g));
+}
+
+// An animated entry alternates between two CachedMesh objects: a refresh writes into the
+// entry retired by the refresh before when nobody holds it any more, without copying the
+// topology; one still held is left alone.
+TEST(MeshRefresh, RetiredEntryNobodyHoldsIsReused)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = uvSphere(16, 8);
+    const CachedMesh* first = cache->get(*g).get();
+    deform(*g, bend);
+    const CachedMesh* second = cache->get(*g).get();
+    EXPECT_NE(first, second);
+    deform(*g, bend);
+    osg::ref_ptr<const CachedMesh> held = cache->get(*g);
+    EXPECT_EQ(first, held.get()) << "nobody held it: written again";
+    expectSameMesh(held->getAdjacency(), freshBuild(*g));
+    const MeshAdjacency heldBefore = held->getAdjacency();
+
+    deform(*g, bend);
+    osg::ref_ptr<const CachedMesh> fourth = cache->get(*g);
+    EXPECT_EQ(second, fourth.get());
+    expectSameMesh(fourth->getAdjacency(), freshBuild(*g));
+    expectSameSilhouettes(fourth->getAdjacency(), freshBuild(*g));
+    deform(*g, bend);
+    osg::ref_ptr<const CachedMesh> fifth = cache->get(*g);
+    EXPECT_NE(held.get(), fifth.get()) << "still held: a new one";
+    expectSameMesh(fifth->getAdjacency(), freshBuild(*g));
+    expectSameMesh(held->getAdjacency(), heldBefore);
+    EXPECT_EQ(1u, cache->getBuildCount());
+    EXPECT_EQ(4u, cache->getRefreshCount());
+}
+
+// Several cull threads refreshing one animated entry at once (the vertices moved between
+// rounds, as an update traversal does) each get a mesh equal to a fresh build, while the
+// mesh half of them kept from the round before stays as it was (the others' are reused).
+TEST(MeshRefresh, ConcurrentRefreshesAgree)
+{
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<osg::Geometry> g = torus(24, 12);
+    constexpr int kThreads = 4;
+    std::vector<osg::ref_ptr<const CachedMesh>> kept(kThreads);
+    std::vector<MeshAdjacency> keptCopies(kThreads);
+    cache->get(*g);
+    for (int round = 0; round < 20; ++round)
+    {
+        deform(*g, [round](const osg::Vec3f& p) { return bend(p) * (0.5f + 0.01f * float(round)); });
+        const MeshAdjacency fresh = freshBuild(*g);
+        std::vector<std::thread> threads;
+        std::atomic<int> wrong{0};
+        for (int t = 0; t < kThreads; ++t)
+            threads.emplace_back([&, t] {
+                osg::ref_ptr<const CachedMesh> mesh = cache->get(*g);
+                if (std::memcmp(mesh->getAdjacency().planes.data(), fresh.planes.data(),
+                                fresh.planes.size() * sizeof(osg::Vec4d)) != 0)
+                    ++wrong;
+                if (kept[t] && std::memcmp(kept[t]->getAdjacency().planes.data(), keptCopies[t].planes.data(),
+                                           keptCopies[t].planes.size() * sizeof(osg::Vec4d)) != 0)
+                    ++wrong;
+                if (t % 2 == 0) return; // the others hold theirs a round longer
+                kept[t] = mesh;
+                keptCopies[t] = mesh->getAdjacency();
+            });
+        for (std::thread& t : threads) t.join();
+        EXPECT_EQ(0, wrong.load()) << "round " << round;
+    }
+    EXPECT_EQ(1u, cache->getBuildCount());
+    EXPECT_GE(cache->getRefreshCount(), 20u);
 }
 
 // Another vertex array of the same length, even of another type, is a refresh too.
