@@ -347,26 +347,35 @@ std::vector<std::uint32_t> connectedParts(const MeshAdjacency& m)
     return part;
 }
 
-/** Parts (connectedParts()) whose signed enclosed volume is negative; each part's volume is
- *  summed about the first vertex of its first face, in double. */
+/** Parts (connectedParts()) whose signed enclosed volume is negative. Six times a part's
+ *  volume is the sum over its faces of n . (a - o), n the face's plane normal, a its first
+ *  vertex and o the first vertex of the part's first face, in double; the faces go to four
+ *  interleaved sums per part, so that the additions do not wait for each other. */
 std::size_t countInwardParts(const MeshAdjacency& m, const std::vector<std::uint32_t>& partOf)
 {
-    std::vector<double> volume;
+    constexpr std::size_t kLanes = 4;
+    std::vector<double> volume; // kLanes sums per part
     std::vector<osg::Vec3d> origin;
-    for (std::uint32_t f = 0; f < m.faces.size(); ++f)
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
     {
         const std::uint32_t r = partOf[f];
-        const MeshTriangle& t = m.faces[f];
-        if (r == volume.size()) // the part's first face
+        const osg::Vec3d a(m.positions[m.faces[f].v[0]]);
+        if (r == origin.size()) // the part's first face
         {
-            volume.push_back(0.0);
-            origin.push_back(osg::Vec3d(m.positions[t.v[0]]));
+            origin.push_back(a);
+            volume.resize(volume.size() + kLanes, 0.0);
         }
-        const osg::Vec3d a = osg::Vec3d(m.positions[t.v[0]]) - origin[r], b = osg::Vec3d(m.positions[t.v[1]]) - origin[r],
-                         c = osg::Vec3d(m.positions[t.v[2]]) - origin[r];
-        volume[r] += a * (b ^ c);
+        const osg::Vec4d& n = m.planes[f];
+        const osg::Vec3d d = a - origin[r];
+        volume[r * kLanes + f % kLanes] += n.x() * d.x() + n.y() * d.y() + n.z() * d.z();
     }
-    return std::size_t(std::count_if(volume.begin(), volume.end(), [](double v) { return v < 0.0; }));
+    std::size_t inward = 0;
+    for (std::size_t r = 0; r < origin.size(); ++r)
+    {
+        const double* lanes = &volume[r * kLanes];
+        if ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) < 0.0) ++inward;
+    }
+    return inward;
 }
 
 /** Fills @p welding from the welded soup and the triangles OpenMesh refused (whose vertex
