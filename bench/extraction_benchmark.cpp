@@ -10,6 +10,7 @@
 
 #include <osg/Geometry>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -243,6 +244,25 @@ void BM_RefreshCache(benchmark::State& state)
     setLabel(state, int(state.range(0)), mesh->getAdjacency());
 }
 
+/** (c'') the other per-frame cost of an animated caster: MeshCache::hasFiniteVertices() and
+ *  getPlane() (asked every frame by the technique) recomputed after dirty(). */
+void BM_VertexFacts(benchmark::State& state)
+{
+    Wave wave(int(state.range(0)));
+    if (!wave.geometry) return state.SkipWithError("cannot read mesh");
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    std::array<osg::Vec3d, 3> spanning;
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        wave.next();
+        state.ResumeTiming();
+        benchmark::DoNotOptimize(cache->hasFiniteVertices(*wave.geometry));
+        benchmark::DoNotOptimize(cache->getPlane(*wave.geometry, spanning));
+    }
+    setLabel(state, int(state.range(0)), *adjacency(int(state.range(0))));
+}
+
 // range(0): 0 torus 10k, 1 torus 100k, 2 torus 1M, 3 bunny; range(1): 0 directional, 1 point
 // (BM_RefreshCache: 0 the retired entry free, 1 held)
 BENCHMARK(BM_Classify)->ArgsProduct({ { 0, 1, 2, 3 }, { 0 } })->Unit(benchmark::kMicrosecond);
@@ -251,6 +271,7 @@ BENCHMARK(BM_ShadowVolume)->ArgsProduct({ { 0, 1, 2, 3 }, { 0, 1 } })->Unit(benc
 BENCHMARK(BM_BuildCache)->Args({ 0, 0 })->Args({ 1, 0 })->Args({ 2, 0 })->Args({ 3, 0 })
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RefreshPositions)->Args({0, 0})->Args({1, 0})->Args({2, 0})->Args({3, 0})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_VertexFacts)->Args({1, 0})->Args({3, 0})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RefreshCache)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
 }
 
