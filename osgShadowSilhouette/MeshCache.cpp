@@ -178,8 +178,12 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
     if (points.size() < 3) return false;
     const osg::Vec3d p0(points.front());
     osg::Vec3d p1 = p0;
+    double farthest = 0.0; // squared distances and areas: no square root per point
     for (const Vec& v : points)
-        if ((osg::Vec3d(v) - p0).length2() > (p1 - p0).length2()) p1 = osg::Vec3d(v);
+    {
+        const double distance = (osg::Vec3d(v) - p0).length2();
+        if (distance > farthest) farthest = distance, p1 = osg::Vec3d(v);
+    }
     const osg::Vec3d axis = p1 - p0;
     const double extent = axis.length();
     if (!(extent > 0.0)) return false;
@@ -187,7 +191,7 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
     double best = 0.0;
     for (const Vec& v : points)
     {
-        const double area = ((osg::Vec3d(v) - p0) ^ axis).length();
+        const double area = ((osg::Vec3d(v) - p0) ^ axis).length2();
         if (area > best) best = area, p2 = osg::Vec3d(v);
     }
     osg::Vec3d normal = axis ^ (p2 - p0);
