@@ -1,14 +1,16 @@
-// Per-frame silhouette extraction and shadow-volume construction, and building the mesh
-// cache, on generated tori of 10k, 100k and 1M triangles and on the scanned Stanford bunny
+// Per-frame silhouette extraction and shadow-volume construction, building the mesh cache
+// and refreshing it when only positions change, on generated tori of 10k, 100k and 1M triangles and on the scanned Stanford bunny
 // shipped by Debian's glmark2-data. Results and the command are in docs/benchmarks.md.
 #include <osgShadowSilhouette/HalfEdgeMesh>
 #include <osgShadowSilhouette/MeshAdjacency>
+#include <osgShadowSilhouette/MeshCache>
 #include <osgShadowSilhouette/SilhouetteExtractor>
 
 #include <benchmark/benchmark.h>
 
 #include <osg/Geometry>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -175,13 +177,102 @@ void BM_BuildCache(benchmark::State& state)
     setLabel(state, int(state.range(0)), mesh);
 }
 
+/** A mesh whose vertices a smooth wave moves (a function of the rest position, so welded
+ *  vertices stay together) between two poses, one per next(). */
+struct Wave
+{
+    osg::ref_ptr<osg::Geometry> geometry;
+    std::vector<osg::Vec3f> rest;
+    int phase = 0;
+
+    explicit Wave(int id) : geometry(meshNumber(id))
+    {
+        if (!geometry) return;
+        const auto& v = *static_cast<const osg::Vec3Array*>(geometry->getVertexArray());
+        rest.assign(v.begin(), v.end());
+    }
+    void next()
+    {
+        auto& v = *static_cast<osg::Vec3Array*>(geometry->getVertexArray());
+        const float amplitude = (phase ^= 1) ? 0.02f : -0.02f;
+        for (std::size_t i = 0; i < rest.size(); ++i)
+            v[i] = rest[i] + osg::Vec3f(0.0f, 0.0f, amplitude * std::sin(8.0f * rest[i].x()));
+        v.dirty();
+    }
+};
+
+/** (c) positions alone changed, in place: refreshMeshPositions() on the adjacency it refreshes
+ *  (positions, welding check, planes, inward parts); no copy of the topology. */
+void BM_RefreshPositions(benchmark::State& state)
+{
+    Wave wave(int(state.range(0)));
+    if (!wave.geometry) return state.SkipWithError("cannot read mesh");
+    MeshAdjacency mesh;
+    MeshWelding welding;
+    buildMeshAdjacency(*wave.geometry, MeshBuildOptions(), mesh, nullptr, &welding);
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        wave.next();
+        state.ResumeTiming();
+        if (!refreshMeshPositions(*wave.geometry, welding, mesh, mesh)) return state.SkipWithError("welding broke");
+        benchmark::DoNotOptimize(mesh.planes.data());
+    }
+    setLabel(state, int(state.range(0)), mesh);
+}
+
+/** (c') the same through MeshCache::get() after dirty() (what an animated caster costs per
+ *  frame). range(1) = 0: the caller holds only the last frame's mesh, so the entry retired
+ *  before is free and refreshed in place; 1: it holds the last two, so each refresh goes
+ *  into a new CachedMesh with a copy of the topology. */
+void BM_RefreshCache(benchmark::State& state)
+{
+    Wave wave(int(state.range(0)));
+    if (!wave.geometry) return state.SkipWithError("cannot read mesh");
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    osg::ref_ptr<const CachedMesh> mesh = cache->get(*wave.geometry), older;
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        wave.next();
+        state.ResumeTiming();
+        osg::ref_ptr<const CachedMesh> next = cache->get(*wave.geometry);
+        older = state.range(1) ? mesh : nullptr;
+        mesh = next;
+    }
+    if (cache->getBuildCount() != 1) return state.SkipWithError("rebuilt instead of refreshed");
+    setLabel(state, int(state.range(0)), mesh->getAdjacency());
+}
+
+/** (c'') the other per-frame cost of an animated caster: MeshCache::hasFiniteVertices() and
+ *  getPlane() (asked every frame by the technique) recomputed after dirty(). */
+void BM_VertexFacts(benchmark::State& state)
+{
+    Wave wave(int(state.range(0)));
+    if (!wave.geometry) return state.SkipWithError("cannot read mesh");
+    osg::ref_ptr<MeshCache> cache = new MeshCache;
+    std::array<osg::Vec3d, 3> spanning;
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        wave.next();
+        state.ResumeTiming();
+        benchmark::DoNotOptimize(cache->hasFiniteVertices(*wave.geometry));
+        benchmark::DoNotOptimize(cache->getPlane(*wave.geometry, spanning));
+    }
+    setLabel(state, int(state.range(0)), *adjacency(int(state.range(0))));
+}
+
 // range(0): 0 torus 10k, 1 torus 100k, 2 torus 1M, 3 bunny; range(1): 0 directional, 1 point
+// (BM_RefreshCache: 0 the retired entry free, 1 held)
 BENCHMARK(BM_Classify)->ArgsProduct({ { 0, 1, 2, 3 }, { 0 } })->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Silhouette)->ArgsProduct({ { 0, 1, 2, 3 }, { 0, 1 } })->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ShadowVolume)->ArgsProduct({ { 0, 1, 2, 3 }, { 0, 1 } })->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildCache)->Args({ 0, 0 })->Args({ 1, 0 })->Args({ 2, 0 })->Args({ 3, 0 })
     ->Unit(benchmark::kMillisecond);
-
+BENCHMARK(BM_RefreshPositions)->Args({0, 0})->Args({1, 0})->Args({2, 0})->Args({3, 0})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_VertexFacts)->Args({1, 0})->Args({3, 0})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RefreshCache)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
 }
 
 BENCHMARK_MAIN();

@@ -55,34 +55,41 @@ struct WholeTrianglesFunctor : public osg::TriangleIndexFunctor<IndexCollector>
     }
 };
 
-template<class ArrayT>
-void copyPositions(const osg::Array& array, std::vector<osg::Vec3d>& out)
+/** A vertex as a position in double: Vec2 gets z = 0, Vec4 is divided by w. */
+template <class Vec>
+osg::Vec3d toVec3d(const Vec& v)
 {
-    const ArrayT& typed = static_cast<const ArrayT&>(array);
-    out.reserve(typed.size());
-    for (const auto& v : typed)
+    constexpr int n = Vec::num_components;
+    osg::Vec3d p;
+    for (int i = 0; i < 3 && i < n; ++i) p[i] = v[i];
+    if constexpr (n == 4) p /= v[3];
+    return p;
+}
+
+/** Calls @p visit with @p array cast to its type, for the vertex array types read as
+ *  positions; false for the others. */
+template <class Visit>
+bool visitPositions(const osg::Array* array, Visit&& visit)
+{
+    if (!array) return false;
+    switch (array->getType())
     {
-        constexpr int n = ArrayT::ElementDataType::num_components;
-        osg::Vec3d p;
-        for (int i = 0; i < 3 && i < n; ++i) p[i] = v[i];
-        if constexpr (n == 4) p /= v[3];
-        out.push_back(p);
+    case osg::Array::Vec2ArrayType: visit(static_cast<const osg::Vec2Array&>(*array)); return true;
+    case osg::Array::Vec3ArrayType: visit(static_cast<const osg::Vec3Array&>(*array)); return true;
+    case osg::Array::Vec4ArrayType: visit(static_cast<const osg::Vec4Array&>(*array)); return true;
+    case osg::Array::Vec2dArrayType: visit(static_cast<const osg::Vec2dArray&>(*array)); return true;
+    case osg::Array::Vec3dArrayType: visit(static_cast<const osg::Vec3dArray&>(*array)); return true;
+    case osg::Array::Vec4dArrayType: visit(static_cast<const osg::Vec4dArray&>(*array)); return true;
+    default: return false;
     }
 }
 
 bool copyVertexArray(const osg::Array* array, std::vector<osg::Vec3d>& out)
 {
-    if (!array) return false;
-    switch (array->getType())
-    {
-        case osg::Array::Vec2ArrayType:  copyPositions<osg::Vec2Array>(*array, out); return true;
-        case osg::Array::Vec3ArrayType:  copyPositions<osg::Vec3Array>(*array, out); return true;
-        case osg::Array::Vec4ArrayType:  copyPositions<osg::Vec4Array>(*array, out); return true;
-        case osg::Array::Vec2dArrayType: copyPositions<osg::Vec2dArray>(*array, out); return true;
-        case osg::Array::Vec3dArrayType: copyPositions<osg::Vec3dArray>(*array, out); return true;
-        case osg::Array::Vec4dArrayType: copyPositions<osg::Vec4dArray>(*array, out); return true;
-        default: return false;
-    }
+    return visitPositions(array, [&out](const auto& typed) {
+        out.reserve(typed.size());
+        for (const auto& v : typed) out.push_back(toVec3d(v));
+    });
 }
 
 bool isFinite(const osg::Vec3d& p)
@@ -160,6 +167,7 @@ struct WeldedSoup
 {
     std::vector<osg::Vec3d> positions;
     std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> weldedOf; ///< per input vertex, as MeshWelding::weldedOf
 };
 
 std::vector<char> markReferenced(const TriangleSoup& soup)
@@ -182,10 +190,12 @@ void weldSoup(const TriangleSoup& soup, double tolerance, WeldedSoup& out, MeshB
     }
     report.weldDistance = box.valid() ? tolerance * (box._max - box._min).length() : 0.0;
     VertexWelder welder(box, report.weldDistance, soup.positions.size());
-    std::vector<std::uint32_t> remap(soup.positions.size(), kInvalid);
+    std::vector<std::uint32_t>& remap = out.weldedOf;
+    remap.assign(soup.positions.size(), MeshWelding::kUnreferenced);
     for (std::size_t i = 0; i < soup.positions.size(); ++i)
-        if (referenced[i] && isFinite(soup.positions[i]))
-            remap[i] = welder.weld(soup.positions[i], out.positions);
+        if (referenced[i])
+            remap[i] =
+                isFinite(soup.positions[i]) ? welder.weld(soup.positions[i], out.positions) : MeshWelding::kNonFinite;
 
     out.indices.reserve(soup.indices.size());
     for (std::size_t t = 0; t + 2 < soup.indices.size(); t += 3)
@@ -197,7 +207,7 @@ void weldSoup(const TriangleSoup& soup, double tolerance, WeldedSoup& out, MeshB
             std::uint32_t i = soup.indices[t + k];
             inRange = inRange && i < remap.size();
             v[k] = inRange ? remap[i] : kInvalid;
-            finite = finite && v[k] != kInvalid;
+            finite = finite && v[k] < MeshWelding::kNonFinite;
         }
         if (!inRange) { ++report.outOfRangeTriangles; continue; }
         if (!finite) { ++report.nonFiniteTriangles; continue; }
@@ -206,8 +216,9 @@ void weldSoup(const TriangleSoup& soup, double tolerance, WeldedSoup& out, MeshB
     }
 }
 
-/** Adds the welded triangles to OpenMesh; faces it refuses get their own vertex copies. */
-void fillHalfEdgeMesh(const WeldedSoup& soup, HalfEdgeMesh& mesh, MeshBuildReport& report)
+/** Adds the welded triangles to OpenMesh; faces it refuses get their own vertex copies.
+ *  Returns where the refused triangles start in soup.indices. */
+std::vector<std::size_t> fillHalfEdgeMesh(const WeldedSoup& soup, HalfEdgeMesh& mesh, MeshBuildReport& report)
 {
     mesh.clear();
     mesh.reserve(soup.positions.size(), soup.indices.size() / 2, soup.indices.size() / 3);
@@ -245,12 +256,25 @@ void fillHalfEdgeMesh(const WeldedSoup& soup, HalfEdgeMesh& mesh, MeshBuildRepor
     }
     report.nonManifoldFaces = refused.size();
     mesh.update_face_normals();
+    return refused;
 }
 
 osg::Vec4d facePlane(const osg::Vec3d& a, const osg::Vec3d& b, const osg::Vec3d& c)
 {
     osg::Vec3d n = (b - a) ^ (c - a);
     return osg::Vec4d(n, -(n * a));
+}
+
+/** The planes of the faces, from the float positions the renderer draws, in double. */
+void computePlanes(MeshAdjacency& adjacency)
+{
+    adjacency.planes.resize(adjacency.faces.size());
+    const osg::Vec3f* p = adjacency.positions.data();
+    for (std::size_t f = 0; f < adjacency.faces.size(); ++f)
+    {
+        const MeshTriangle& tri = adjacency.faces[f];
+        adjacency.planes[f] = facePlane(p[tri.v[0]], p[tri.v[1]], p[tri.v[2]]);
+    }
 }
 
 void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
@@ -262,16 +286,13 @@ void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
         adjacency.positions[v.idx()].set(float(p[0]), float(p[1]), float(p[2]));
     }
     adjacency.faces.resize(mesh.n_faces());
-    adjacency.planes.resize(mesh.n_faces());
     for (auto f : mesh.faces())
     {
         MeshTriangle& tri = adjacency.faces[f.idx()];
         int k = 0;
         for (auto v : mesh.fv_range(f)) tri.v[k++] = static_cast<std::uint32_t>(v.idx());
-        // planes from the float positions the renderer draws, in double
-        const osg::Vec3f* p = adjacency.positions.data();
-        adjacency.planes[f.idx()] = facePlane(p[tri.v[0]], p[tri.v[1]], p[tri.v[2]]);
     }
+    computePlanes(adjacency);
 }
 
 void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
@@ -308,30 +329,136 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t f)
     return f;
 }
 
-/** Connected parts (faces joined by interior edges) whose signed enclosed volume is
- *  negative; each part's volume is summed about its own first vertex, in double. */
-std::size_t countInwardParts(const MeshAdjacency& m)
+/** Per face, its connected part (faces joined by interior edges), the parts numbered 0,
+ *  1, ... in the order of their first faces. */
+std::vector<std::uint32_t> connectedParts(const MeshAdjacency& m)
 {
     std::vector<std::uint32_t> parent(m.faces.size());
     for (std::uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
     for (const EdgeFaces& e : m.edgeFaces) parent[findRoot(parent, e.face0)] = findRoot(parent, e.face1);
-    std::vector<double> volume(m.faces.size(), 0.0);
-    std::vector<osg::Vec3d> origin(m.faces.size());
-    std::vector<char> seen(m.faces.size(), 0);
+    std::vector<std::uint32_t> number(m.faces.size(), kInvalid), part(m.faces.size());
+    std::uint32_t parts = 0;
     for (std::uint32_t f = 0; f < m.faces.size(); ++f)
     {
-        const std::uint32_t r = findRoot(parent, f);
-        const MeshTriangle& t = m.faces[f];
-        if (!seen[r]) origin[r] = osg::Vec3d(m.positions[t.v[0]]);
-        seen[r] = 1;
-        const osg::Vec3d a = osg::Vec3d(m.positions[t.v[0]]) - origin[r], b = osg::Vec3d(m.positions[t.v[1]]) - origin[r],
-                         c = osg::Vec3d(m.positions[t.v[2]]) - origin[r];
-        volume[r] += a * (b ^ c);
+        std::uint32_t& n = number[findRoot(parent, f)];
+        if (n == kInvalid) n = parts++;
+        part[f] = n;
+    }
+    return part;
+}
+
+/** Parts (connectedParts()) whose signed enclosed volume is negative. Six times a part's
+ *  volume is the sum over its faces of n . (a - o), n the face's plane normal, a its first
+ *  vertex and o the first vertex of the part's first face, in double; the faces go to four
+ *  interleaved sums per part, so that the additions do not wait for each other. */
+std::size_t countInwardParts(const MeshAdjacency& m, const std::vector<std::uint32_t>& partOf)
+{
+    constexpr std::size_t kLanes = 4;
+    std::vector<double> volume; // kLanes sums per part
+    std::vector<osg::Vec3d> origin;
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+    {
+        const std::uint32_t r = partOf[f];
+        const osg::Vec3d a(m.positions[m.faces[f].v[0]]);
+        if (r == origin.size()) // the part's first face
+        {
+            origin.push_back(a);
+            volume.resize(volume.size() + kLanes, 0.0);
+        }
+        const osg::Vec4d& n = m.planes[f];
+        const osg::Vec3d d = a - origin[r];
+        volume[r * kLanes + f % kLanes] += n.x() * d.x() + n.y() * d.y() + n.z() * d.z();
     }
     std::size_t inward = 0;
-    for (std::uint32_t f = 0; f < volume.size(); ++f)
-        if (seen[f] && findRoot(parent, f) == f && volume[f] < 0.0) ++inward;
+    for (std::size_t r = 0; r < origin.size(); ++r)
+    {
+        const double* lanes = &volume[r * kLanes];
+        if ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) < 0.0) ++inward;
+    }
     return inward;
+}
+
+/** Fills @p welding from the welded soup and the triangles OpenMesh refused (whose vertex
+ *  copies follow the welded vertices, three per refused triangle). */
+void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& refused,
+                     std::vector<std::uint32_t> parts, double tolerance, MeshWelding& welding)
+{
+    welding.weldedOf = welded.weldedOf;
+    welding.sourceOf.assign(welded.positions.size(), kInvalid);
+    for (std::size_t i = 0; i < welded.weldedOf.size(); ++i)
+    {
+        const std::uint32_t w = welded.weldedOf[i];
+        if (w < MeshWelding::kNonFinite && welding.sourceOf[w] == kInvalid)
+            welding.sourceOf[w] = static_cast<std::uint32_t>(i);
+    }
+    for (std::size_t t : refused)
+        for (int k = 0; k < 3; ++k) welding.sourceOf.push_back(welding.sourceOf[welded.indices[t + k]]);
+    welding.partOf = std::move(parts);
+    welding.weldTolerance = tolerance;
+}
+
+/** The bounding box of the referenced vertices of @p array; false when one of them turned
+ *  finite or non-finite since @p welding was built. */
+template <class ArrayT>
+bool finiteBounds(const ArrayT& array, const MeshWelding& welding, osg::BoundingBoxd& box)
+{
+    for (std::size_t i = 0; i < welding.weldedOf.size(); ++i)
+    {
+        const std::uint32_t w = welding.weldedOf[i];
+        if (w == MeshWelding::kUnreferenced) continue;
+        const osg::Vec3d p = toVec3d(array[i]);
+        const bool finite = isFinite(p);
+        if (finite != (w != MeshWelding::kNonFinite)) return false;
+        if (finite) box.expandBy(p);
+    }
+    return true;
+}
+
+/** Whether every welded vertex of @p array is still within @p distance of the first vertex
+ *  of its group (the one whose position the mesh vertex has, as the welder compares). */
+template <class ArrayT>
+bool weldsHold(const ArrayT& array, const MeshWelding& welding, double distance)
+{
+    const double limit = distance * distance;
+    for (std::size_t i = 0; i < welding.weldedOf.size(); ++i)
+    {
+        const std::uint32_t w = welding.weldedOf[i];
+        if (w >= MeshWelding::kNonFinite) continue;
+        const std::uint32_t first = welding.sourceOf[w];
+        if (first != i && (toVec3d(array[i]) - toVec3d(array[first])).length2() > limit) return false;
+    }
+    return true;
+}
+
+/** The positions and welding distance of @p out from @p array, if the welding holds. */
+template <class ArrayT>
+bool refreshPositions(const ArrayT& array, const MeshWelding& welding, MeshAdjacency& out)
+{
+    if (array.size() != welding.weldedOf.size()) return false;
+    osg::BoundingBoxd box;
+    if (!finiteBounds(array, welding, box)) return false;
+    const double distance = box.valid() ? welding.weldTolerance * (box._max - box._min).length() : 0.0;
+    if (!weldsHold(array, welding, distance)) return false;
+    out.report.weldDistance = distance;
+    out.positions.resize(welding.sourceOf.size());
+    for (std::size_t v = 0; v < welding.sourceOf.size(); ++v)
+    {
+        const osg::Vec3d p = toVec3d(array[welding.sourceOf[v]]);
+        out.positions[v].set(float(p.x()), float(p.y()), float(p.z()));
+    }
+    return true;
+}
+
+/** Everything of @p from that does not depend on positions. */
+void copyTopology(const MeshAdjacency& from, MeshAdjacency& to)
+{
+    to.faces = from.faces;
+    to.edgeFaces = from.edgeFaces;
+    to.edgeVertices = from.edgeVertices;
+    to.boundaryEdges = from.boundaryEdges;
+    to.nonManifoldFaces = from.nonManifoldFaces;
+    to.report = from.report;
+    to.inwardParts = 0;
 }
 
 void warnAboutInput(const std::string& name, const MeshBuildReport& report)
@@ -377,35 +504,50 @@ bool collectTriangles(const osg::Geometry& geometry, TriangleSoup& soup)
     return true;
 }
 
-void buildMeshAdjacency(const TriangleSoup& soup, const MeshBuildOptions& options,
-                        const std::string& name, MeshAdjacency& adjacency,
-                        HalfEdgeMesh* halfEdgeMesh)
+void buildMeshAdjacency(const TriangleSoup& soup, const MeshBuildOptions& options, const std::string& name,
+                        MeshAdjacency& adjacency, HalfEdgeMesh* halfEdgeMesh, MeshWelding* welding)
 {
     adjacency = MeshAdjacency();
     MeshBuildReport& report = adjacency.report;
     report.inputTriangles = soup.indices.size() / 3;
 
     WeldedSoup welded;
-    weldSoup(soup, std::max(0.0, options.weldTolerance), welded, report);
+    const double tolerance = std::max(0.0, options.weldTolerance);
+    weldSoup(soup, tolerance, welded, report);
 
     HalfEdgeMesh local;
     HalfEdgeMesh& mesh = halfEdgeMesh ? *halfEdgeMesh : local;
-    fillHalfEdgeMesh(welded, mesh, report);
+    const std::vector<std::size_t> refused = fillHalfEdgeMesh(welded, mesh, report);
     flattenFaces(mesh, adjacency);
     flattenEdges(mesh, adjacency);
-    if (adjacency.isClosed()) adjacency.inwardParts = countInwardParts(adjacency);
+    std::vector<std::uint32_t> parts;
+    if (adjacency.isClosed()) parts = connectedParts(adjacency);
+    if (adjacency.isClosed()) adjacency.inwardParts = countInwardParts(adjacency, parts);
     std::size_t firstRefused = mesh.n_faces() - report.nonManifoldFaces;
     for (std::size_t f = firstRefused; f < mesh.n_faces(); ++f)
         adjacency.nonManifoldFaces.push_back(static_cast<std::uint32_t>(f));
     warnAboutInput(name, report);
+    if (welding) describeWelding(welded, refused, std::move(parts), tolerance, *welding);
 }
 
-void buildMeshAdjacency(const osg::Geometry& geometry, const MeshBuildOptions& options,
-                        MeshAdjacency& adjacency, HalfEdgeMesh* halfEdgeMesh)
+void buildMeshAdjacency(const osg::Geometry& geometry, const MeshBuildOptions& options, MeshAdjacency& adjacency,
+                        HalfEdgeMesh* halfEdgeMesh, MeshWelding* welding)
 {
     TriangleSoup soup;
     collectTriangles(geometry, soup);
-    buildMeshAdjacency(soup, options, describeGeometry(geometry), adjacency, halfEdgeMesh);
+    buildMeshAdjacency(soup, options, describeGeometry(geometry), adjacency, halfEdgeMesh, welding);
 }
 
+bool refreshMeshPositions(const osg::Geometry& geometry, const MeshWelding& welding, const MeshAdjacency& built,
+                          MeshAdjacency& refreshed)
+{
+    if (&refreshed != &built) copyTopology(built, refreshed);
+    bool held = false;
+    const bool readable = visitPositions(
+        geometry.getVertexArray(), [&](const auto& array) { held = refreshPositions(array, welding, refreshed); });
+    if (!readable || !held) return false;
+    computePlanes(refreshed);
+    if (!welding.partOf.empty()) refreshed.inwardParts = countInwardParts(refreshed, welding.partOf);
+    return true;
+}
 }

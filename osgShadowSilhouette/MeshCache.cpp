@@ -25,6 +25,13 @@ bool MeshCache::Signature::matches(const osg::Geometry& geometry) const
 {
     const osg::Array* array = geometry.getVertexArray();
     if (array != vertices || (array && array->getModifiedCount() != verticesModified)) return false;
+    return sameTopology(geometry);
+}
+
+bool MeshCache::Signature::sameTopology(const osg::Geometry& geometry) const
+{
+    const osg::Array* array = geometry.getVertexArray();
+    if (!array || !vertices || array->getNumElements() != vertexCount) return false;
     if (geometry.getNumPrimitiveSets() != primitives.size()) return false;
     for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
     {
@@ -40,6 +47,7 @@ MeshCache::Signature MeshCache::signatureOf(const osg::Geometry& geometry)
     Signature s;
     s.vertices = geometry.getVertexArray();
     s.verticesModified = s.vertices ? s.vertices->getModifiedCount() : 0;
+    s.vertexCount = s.vertices ? s.vertices->getNumElements() : 0;
     s.primitives.reserve(geometry.getNumPrimitiveSets());
     for (unsigned int i = 0; i < geometry.getNumPrimitiveSets(); ++i)
     {
@@ -59,29 +67,59 @@ osg::ref_ptr<CachedMesh> MeshCache::build(const osg::Geometry& geometry) const
         keep = _keepHalfEdgeMesh;
     }
     osg::ref_ptr<CachedMesh> mesh = new CachedMesh;
-    if (keep) mesh->_halfEdgeMesh.reset(new HalfEdgeMesh);
-    buildMeshAdjacency(geometry, options, mesh->_adjacency, mesh->_halfEdgeMesh.get());
+    std::shared_ptr<HalfEdgeMesh> halfEdgeMesh(keep ? new HalfEdgeMesh : nullptr);
+    std::shared_ptr<MeshWelding> welding(new MeshWelding);
+    buildMeshAdjacency(geometry, options, mesh->_adjacency, halfEdgeMesh.get(), welding.get());
+    mesh->_halfEdgeMesh = std::move(halfEdgeMesh);
+    mesh->_welding = std::move(welding);
+    return mesh;
+}
+
+osg::ref_ptr<CachedMesh> MeshCache::refresh(const osg::Geometry& geometry, const CachedMesh& previous,
+                                            osg::ref_ptr<CachedMesh> spare)
+{
+    if (!previous._welding) return nullptr;
+    // a spare of the same build has the same topology already: only positions are written
+    osg::ref_ptr<CachedMesh> mesh = spare.valid() ? spare.get() : new CachedMesh;
+    const MeshAdjacency& built = spare ? spare->_adjacency : previous._adjacency;
+    if (!refreshMeshPositions(geometry, *previous._welding, built, mesh->_adjacency)) return nullptr;
+    mesh->_halfEdgeMesh = previous._halfEdgeMesh;
+    mesh->_welding = previous._welding;
     return mesh;
 }
 
 osg::ref_ptr<const CachedMesh> MeshCache::get(const osg::Geometry& geometry)
 {
+    osg::ref_ptr<const CachedMesh> previous; // the entry to refresh, if only positions changed
+    osg::ref_ptr<CachedMesh> spare;          // a retired entry only we hold, to write into
     {
         Lock lock(_mutex);
         auto it = _entries.find(&geometry);
-        if (it != _entries.end() && it->second.geometry.get() == &geometry &&
-            it->second.signature.matches(geometry))
-            return it->second.mesh;
+        if (it != _entries.end() && it->second.geometry.get() == &geometry)
+        {
+            Entry& entry = it->second;
+            if (entry.signature.matches(geometry)) return entry.mesh;
+            if (entry.signature.sameTopology(geometry)) previous = entry.mesh;
+            // Held by the entry alone, it can be reached by no one else: ours to write.
+            if (previous && entry.spare && entry.spare->referenceCount() == 1 &&
+                entry.spare->_welding == previous->_welding)
+                spare.swap(entry.spare);
+        }
     }
     // taken before building, so that a change made meanwhile triggers another rebuild
     Signature signature = signatureOf(geometry);
-    osg::ref_ptr<const CachedMesh> mesh = build(geometry);
+    osg::ref_ptr<CachedMesh> mesh;
+    if (previous) mesh = refresh(geometry, *previous, spare);
+    const bool refreshed = mesh.valid();
+    if (!refreshed) mesh = build(geometry);
     Lock lock(_mutex);
     Entry& entry = _entries[&geometry];
+    const bool sameBuild = entry.mesh.valid() && entry.mesh->_welding == mesh->_welding;
+    entry.spare = sameBuild ? entry.mesh.get() : nullptr;
     entry.geometry = &geometry;
     entry.signature = signature;
     entry.mesh = mesh;
-    ++_buildCount;
+    ++(refreshed ? _refreshCount : _buildCount);
     return mesh;
 }
 
@@ -140,8 +178,12 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
     if (points.size() < 3) return false;
     const osg::Vec3d p0(points.front());
     osg::Vec3d p1 = p0;
+    double farthest = 0.0; // squared distances and areas: no square root per point
     for (const Vec& v : points)
-        if ((osg::Vec3d(v) - p0).length2() > (p1 - p0).length2()) p1 = osg::Vec3d(v);
+    {
+        const double distance = (osg::Vec3d(v) - p0).length2();
+        if (distance > farthest) farthest = distance, p1 = osg::Vec3d(v);
+    }
     const osg::Vec3d axis = p1 - p0;
     const double extent = axis.length();
     if (!(extent > 0.0)) return false;
@@ -149,7 +191,7 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
     double best = 0.0;
     for (const Vec& v : points)
     {
-        const double area = ((osg::Vec3d(v) - p0) ^ axis).length();
+        const double area = ((osg::Vec3d(v) - p0) ^ axis).length2();
         if (area > best) best = area, p2 = osg::Vec3d(v);
     }
     osg::Vec3d normal = axis ^ (p2 - p0);
@@ -249,4 +291,9 @@ std::size_t MeshCache::getBuildCount() const
     return _buildCount;
 }
 
+std::size_t MeshCache::getRefreshCount() const
+{
+    Lock lock(_mutex);
+    return _refreshCount;
+}
 }

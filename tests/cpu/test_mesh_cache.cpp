@@ -1,4 +1,5 @@
-// MeshCache: one mesh per geometry, rebuilt only when its arrays change.
+// MeshCache: one mesh per geometry, rebuilt or refreshed only when its arrays change
+// (test_mesh_refresh.cpp: refreshes in detail).
 #include "test_mesh_shapes.h"
 
 #include <osgShadowSilhouette/HalfEdgeMesh>
@@ -35,36 +36,53 @@ struct Change
     const char* name;
     std::function<void(osg::Geometry&)> apply;
     std::size_t facesAfter;
+    bool refresh; ///< positions alone changed: the entry is refreshed, not rebuilt
 };
 
-// each change must make the next lookup rebuild; the face count after it is counted by hand
+// each change must make the next lookup refresh or rebuild; the face count after it is
+// counted by hand
 const std::vector<Change> kChanges = {
-    { "vertex_array_dirtied", [](osg::Geometry& g) {
-          auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
-          (*v)[6] = osg::Vec3f(2, 2, 2);
-          v->dirty();
-      }, 12 },
-    { "vertex_array_replaced", [](osg::Geometry& g) {
-          auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
-          g.setVertexArray(new osg::Vec3Array(v->begin(), v->end()));
-      }, 12 },
-    { "primitive_set_dirtied", [](osg::Geometry& g) {
-          auto* e = static_cast<osg::DrawElementsUInt*>(g.getPrimitiveSet(0));
-          e->resize(30); // drop the -x face
-          e->dirty();
-      }, 10 },
-    { "primitive_set_added", [](osg::Geometry& g) {
-          std::vector<unsigned int> extra = { 0, 1, 6 };
-          g.addPrimitiveSet(new osg::DrawElementsUInt(GL_TRIANGLES, extra.begin(), extra.end()));
-      }, 13 },
-    { "primitive_set_removed", [](osg::Geometry& g) { g.removePrimitiveSet(0, 1); }, 0 },
+    {"vertex_array_dirtied",
+     [](osg::Geometry& g) {
+         auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
+         (*v)[6] = osg::Vec3f(2, 2, 2);
+         v->dirty();
+     },
+     12, true},
+    {"vertex_array_replaced",
+     [](osg::Geometry& g) {
+         auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
+         g.setVertexArray(new osg::Vec3Array(v->begin(), v->end()));
+     },
+     12, true},
+    {"vertex_added",
+     [](osg::Geometry& g) {
+         auto* v = static_cast<osg::Vec3Array*>(g.getVertexArray());
+         v->push_back(osg::Vec3f(2, 2, 2));
+         v->dirty();
+     },
+     12, false},
+    {"primitive_set_dirtied",
+     [](osg::Geometry& g) {
+         auto* e = static_cast<osg::DrawElementsUInt*>(g.getPrimitiveSet(0));
+         e->resize(30); // drop the -x face
+         e->dirty();
+     },
+     10, false},
+    {"primitive_set_added",
+     [](osg::Geometry& g) {
+         std::vector<unsigned int> extra = {0, 1, 6};
+         g.addPrimitiveSet(new osg::DrawElementsUInt(GL_TRIANGLES, extra.begin(), extra.end()));
+     },
+     13, false},
+    {"primitive_set_removed", [](osg::Geometry& g) { g.removePrimitiveSet(0, 1); }, 0, false},
 };
 
 void PrintTo(const Change& c, std::ostream* os) { *os << c.name; }
 
 class CacheInvalidation : public ::testing::TestWithParam<Change> {};
 
-TEST_P(CacheInvalidation, RebuildsAfterTheChange)
+TEST_P(CacheInvalidation, RebuildsOrRefreshesAfterTheChange)
 {
     osg::ref_ptr<MeshCache> cache = new MeshCache;
     osg::ref_ptr<osg::Geometry> g = cube();
@@ -72,11 +90,14 @@ TEST_P(CacheInvalidation, RebuildsAfterTheChange)
     GetParam().apply(*g);
     osg::ref_ptr<const CachedMesh> after = cache->get(*g);
     EXPECT_NE(before.get(), after.get());
-    EXPECT_EQ(2u, cache->getBuildCount());
+    const std::size_t builds = GetParam().refresh ? 1u : 2u, refreshes = GetParam().refresh ? 1u : 0u;
+    EXPECT_EQ(builds, cache->getBuildCount());
+    EXPECT_EQ(refreshes, cache->getRefreshCount());
     EXPECT_EQ(GetParam().facesAfter, after->getAdjacency().faces.size());
     EXPECT_EQ(12u, before->getAdjacency().faces.size()); // old readers keep their mesh
     EXPECT_EQ(after.get(), cache->get(*g).get());
-    EXPECT_EQ(2u, cache->getBuildCount());
+    EXPECT_EQ(builds, cache->getBuildCount());
+    EXPECT_EQ(refreshes, cache->getRefreshCount());
 }
 
 INSTANTIATE_TEST_SUITE_P(Changes, CacheInvalidation, ::testing::ValuesIn(kChanges),
