@@ -247,6 +247,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     a.read("--visibility", o.visibility);
     a.read("--reference-visibility", o.referenceVisibility);
     a.read("--compare-visibility", o.compareVisibility);
+    a.read("--visibility-error", o.visibilityError);
     std::string factor, units;
     double value = 0.0;
     if (a.read("--polygon-offset", factor, units))
@@ -285,7 +286,7 @@ std::string renderOptionsUsage(const std::string& program)
       << "    [--reference ref%d.png] [--reference-offset S] [--compare ref%d.png] [--diff diff%d.png] [--classes "
          "classes%d.png]\n"
       << "    [--light-size S] [--visibility vis%d.png] [--reference-visibility ref%d.png] [--compare-visibility "
-         "ref%d.png]\n"
+         "ref%d.png] [--visibility-error err%d.png]\n"
       << "    [--polygon-offset FACTOR UNITS] [--skip-empty-faces on|off]\n"
       << "    [--property NAME=VALUE]... (any property of the technique:";
     for (const osgShadowSilhouette::PropertyInfo& p : osgShadowSilhouette::properties()) s << " " << p.name;

@@ -59,6 +59,10 @@ struct RenderOptions
      *  (written earlier by --reference-visibility at the same view and --light-size) instead
      *  of computing it again. */
     std::string compareVisibility;
+    /** --visibility-error err.png: |v - v_ref| of --visibility against the exact visibility,
+     *  as a visibility mask (16-bit), at the scored pixels (geometry in both, outside the
+     *  reference's grazing band); no geometry elsewhere. */
+    std::string visibilityError;
     /** The technique's properties set on the command line, in order, each checked against the
      *  table of properties (osgShadowSilhouette/Properties): --property NAME=VALUE, and the
      *  shorthands of propertyOptions() (--max-shadow-lights N, --hybrid-method lists, ...). */

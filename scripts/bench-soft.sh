@@ -16,6 +16,8 @@
 #   MAPS="512 1024 2048 4096" scripts/bench-soft.sh # the full map-size sweep
 #   SCENES="default" LIGHTS=sun SUN_SIZES="0 2" MAPS=2048 OUT=/tmp/soft scripts/bench-soft.sh
 #   MAPPED="" UNMAPPED="hybrid:512" REF_DIR=/tmp/tmp.X OUT=/tmp/hybrid scripts/bench-soft.sh
+#   MAPPED="" UNMAPPED="hybrid:512 hybrid:512:256" SUN_SIZES="1 3" POINT_SIZES="0.1 0.3" OUT=/tmp/rays \
+#     scripts/bench-soft.sh   (HYBRID's shadow rays at 64 and 256 per penumbra pixel)
 #     (OUT other than docs/bench: a subset; the tables go to $OUT/soft.md, docs stay alone)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,7 +28,9 @@ LIGHTS=${LIGHTS:-"sun point"}
 SUN_SIZES=${SUN_SIZES:-"0 1 3"}       # angular radius, degrees
 POINT_SIZES=${POINT_SIZES:-"0 0.1 0.3"} # radius, scene units
 MAPS=${MAPS:-"1024 2048"}
-# technique[:filter[:FilterWindow]], each at every map size; hybrid and volume once.
+# technique[:filter[:FilterWindow]], each at every map size; hybrid and volume once, as
+# mode:map[:SoftSamples] (hybrid:512:256: 256 shadow rays per penumbra pixel, filter column
+# "rays256"; without it, the default 64 and "none").
 # SoftShadowMap: osgShadow's, at its default softness (it has no light size).
 MAPPED=${MAPPED-"shadowmap:pcf2x2 shadowmap:pcf:5 shadowmap:pcss silhouette:none silhouette:silhouette SoftShadowMap"}
 UNMAPPED=${UNMAPPED-"hybrid:512 volume:512"}
@@ -64,6 +68,11 @@ run() {
   # SHADOW_MAP's filters and SILHOUETTE_MAP's own; the other modes and the peer render as they are.
   local filterarg=()
   case $mode:$filter in shadowmap:* | silhouette:silhouette) filterarg=(--filter "$filter") ;; esac
+  # HYBRID's shadow rays per penumbra pixel (SoftSamples) ride in the window field.
+  if [ "$mode" = hybrid ] && [ -n "$window" ]; then
+    filterarg=(--soft-samples "$window")
+    label="rays$window" window=""
+  fi
   scripts/with-display.sh "$BUILD_DIR/bin/osgsilhouetteshadow" --offscreen --scene "$scene" \
     --mode "$mode" --map-size "$map" $place --size $W $H --frames "$FRAMES" --warmup 3 \
     "${filterarg[@]}" ${window:+--filter-window "$window"} --light-size "$size" \
@@ -80,8 +89,8 @@ for scene in $SCENES; do
     [ "$light" = point ] && sizes=$POINT_SIZES
     for size in $sizes; do
       for entry in $UNMAPPED; do
-        IFS=: read -r mode map <<< "$entry"
-        run "$scene" "$light" "$size" "$mode" "$map" none ""
+        IFS=: read -r mode map samples <<< "$entry"
+        run "$scene" "$light" "$size" "$mode" "$map" none "${samples:-}"
       done
       for map in $MAPS; do
         for entry in $MAPPED; do

@@ -30,6 +30,7 @@
 #include <osgViewer/ViewerEventHandlers>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -146,6 +147,18 @@ int writeVisibility(const osshar::RenderOptions& options, const osshar::Prepared
         std::cerr << "osgsilhouetteshadow: cannot compare visibility: " << c.error << "\n";
         return 1;
     }
+    if (!options.visibilityError.empty())
+    {
+        // |v - v_ref| where the scores count a pixel: where the error of a penumbra lies.
+        ossref::VisibilityMask error = ossref::VisibilityMask::filled(reference.width, reference.height);
+        for (std::size_t k = 0; k < error.value.size(); ++k)
+            if (reference.value[k] != ossref::VIS_BACKGROUND && candidate.value[k] != ossref::VIS_BACKGROUND &&
+                !reference.isGrazing(k))
+                error.value[k] = ossref::encodeVisibility(std::abs(ossref::decodeVisibility(candidate.value[k]) -
+                                                                   ossref::decodeVisibility(reference.value[k])));
+        if (!ossref::writeVisibility(error, perLightName(options.visibilityError, index)))
+            std::cerr << "cannot write " << perLightName(options.visibilityError, index) << "\n", status = 1;
+    }
     std::printf("light=%u light_size=%g vis_mae=%.5f vis_mae_penumbra=%.5f vis_p99_penumbra=%.5f "
                 "penumbra_pixels=%lld hard_wrong_pct=%.4f\n",
                 index, options.lightSize, c.visMae, c.visMaePenumbra, c.visP99Penumbra, c.penumbraPixels,
@@ -232,7 +245,20 @@ int main(int argc, char** argv)
                     "depth_prepass=%d list_block_heads=%d slots_skipped=%u blended_round=%d\n",
                     s.depthPassesReused, s.silhouettePassesReused, s.lightsSkipped, s.volumesCulled,
                     s.depthPrepass ? 1 : 0, s.listBlockHeads ? 1 : 0, s.slotsSkipped, s.blendedRound ? 1 : 0);
-        std::printf("penumbra_pixels_cast=%lld shadow_rays=%lld\n", s.penumbraPixels, s.shadowRays);
+        // HYBRID's penumbra pixels and rays are counted only while the technique records
+        // statistics (a counter in its eye pass): a few frames after the timed ones, so that
+        // the counter does not run in them.
+        long long penumbraPixels = s.penumbraPixels, shadowRays = s.shadowRays;
+        if (technique->getMode() == SilhouetteShadowTechnique::HYBRID)
+        {
+            osg::ref_ptr<osg::Stats> stats = new osg::Stats("osgsilhouetteshadow");
+            technique->setStats(stats.get());
+            renderer.timeFrames(0, 3); // the counts come back a frame or two late
+            const SilhouetteShadowTechnique::Statistics counted = technique->getStatistics();
+            technique->setStats(nullptr);
+            penumbraPixels = counted.penumbraPixels, shadowRays = counted.shadowRays;
+        }
+        std::printf("penumbra_pixels_cast=%lld shadow_rays=%lld\n", penumbraPixels, shadowRays);
     }
 
     if (!options.classes.empty() && technique)

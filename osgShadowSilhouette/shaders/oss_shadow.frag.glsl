@@ -126,6 +126,7 @@ float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
 #if defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
 // HYBRID under a light with a size (docs/soft-shadows.md): the penumbra class and its rays.
 uniform float oss_listLightSize[OSS_MAX_SHADOW_SLOTS]; // 0: the slot's light is a point (hard)
+uniform vec4 oss_listLight[OSS_MAX_SHADOW_SLOTS];      // eye space: (toward the light, 0) or (position, 1)
 uniform vec2 oss_filterScale[OSS_MAX_SHADOW_SLOTS];    // footprint radius per unit of depth (penumbraScale())
 vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition);
 const float OSS_CONE_MAX_TEXELS = 48.0; // ShaderConstants: LIST_CONE_MAX_TEXELS
@@ -157,6 +158,15 @@ bool oss_coneBlocked(int s, vec4 p, vec2 slope)
     float bias = oss_lookupBias(oss_eyeToShadow[s], c, p);
     vec2 size = vec2(textureSize(oss_shadowMap[s], 0));
     float perDepth = max(oss_filterScale[s].x * size.x, 1e-6); // footprint texels per unit of depth
+    // A point or spot light's sphere: penumbraScale() is the footprint of a disc facing the
+    // map's axis. The light's disc faces the point (MEASURE.md): off the axis its footprint
+    // is wider, by |D| / D_ax across (D the light to the point, D_ax its depth along the axis,
+    // c.w) and by up to D_ax / (D_ax - R) more where the disc leans toward the point's depth.
+    // Without this, the outer rim of a penumbra off a cube face's axis read lit.
+    vec4 light = oss_listLight[s];
+    float radius = oss_listLightSize[s];
+    if (light.w != 0.0)
+        perDepth *= c.w > 2.0 * radius ? length(p.xyz / p.w - light.xyz) / (c.w - radius) : 1e6;
     float reach = min(perDepth * t.z, OSS_CONE_MAX_TEXELS) + 1.5;
     bool blocked = false;
     for (int level = 0; level < 5 && !blocked; ++level)

@@ -5,7 +5,8 @@
 // depth that is linear across the projected triangle) and covers its bounding box, grown by
 // half a texel, with a quad: every texel the triangle touches gets a fragment, and the
 // fragment stage keeps exactly those (conservative rasterization, as in irregular
-// z-buffers). Triangles reaching behind a perspective light's eye plane are not listed.
+// z-buffers). A triangle reaching behind a perspective light's eye plane is listed as its
+// part beyond the near plane (one or two triangles), the part the depth pass draws.
 //
 // List buffer layout (uints, G the grid size): [0] node count, [1] triangle count, [2] 1 when
 // any triangle reached the map, listed or not (the technique keeps the slot in the eye pass
@@ -31,7 +32,7 @@
 #pragma import_defines(OSS_ALPHA_TEST)
 
 layout(triangles) in;
-layout(triangle_strip, max_vertices = 4) out;
+layout(triangle_strip, max_vertices = 8) out;
 
 layout(std430, binding = 0) buffer OssList { uint oss_list[]; };
 uniform uint oss_listNodeCapacity;
@@ -67,20 +68,9 @@ bool oss_canShadowReceivers(vec3 v0, vec3 v1, vec3 v2)
     return false;
 }
 
-void main()
+// Lists triangle c0 c1 c2 (the light's clip space, every w > 0) in the texels it touches.
+void oss_listTriangle(vec4 c0, vec4 c1, vec4 c2)
 {
-    vec4 p0 = oss_lightViewPosition[0], p1 = oss_lightViewPosition[1], p2 = oss_lightViewPosition[2];
-    if (p0.w > 0.0 && p1.w > 0.0 && p2.w > 0.0 &&
-        !oss_canShadowReceivers(p0.xyz / p0.w, p1.xyz / p1.w, p2.xyz / p2.w))
-        return; // no receiver behind it
-    vec4 c0 = gl_in[0].gl_Position, c1 = gl_in[1].gl_Position, c2 = gl_in[2].gl_Position;
-    if (c0.w <= 0.0 && c1.w <= 0.0 && c2.w <= 0.0)
-        return; // wholly behind a perspective light's eye plane: outside its map
-    if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0)
-    {
-        oss_list[2] = 1u; // reaches behind it: not listed, but its depth pass may draw part of it
-        return;
-    }
     vec3 t0 = c0.xyz / c0.w * 0.5 + 0.5, t1 = c1.xyz / c1.w * 0.5 + 0.5, t2 = c2.xyz / c2.w * 0.5 + 0.5;
     vec2 lo = min(min(t0.xy, t1.xy), t2.xy), hi = max(max(t0.xy, t1.xy), t2.xy);
     if (any(greaterThan(lo, vec2(1.0))) || any(lessThan(hi, vec2(0.0))))
@@ -133,4 +123,54 @@ void main()
         EmitVertex();
     }
     EndPrimitive();
+}
+
+// Where edge a b crosses the near plane (clip-space z + w = 0; da, db its distances).
+vec4 oss_nearCut(vec4 a, vec4 b, float da, float db)
+{
+    return mix(a, b, da / (da - db));
+}
+
+void main()
+{
+    vec4 p0 = oss_lightViewPosition[0], p1 = oss_lightViewPosition[1], p2 = oss_lightViewPosition[2];
+    if (p0.w > 0.0 && p1.w > 0.0 && p2.w > 0.0 &&
+        !oss_canShadowReceivers(p0.xyz / p0.w, p1.xyz / p1.w, p2.xyz / p2.w))
+        return; // no receiver behind it
+    vec4 c0 = gl_in[0].gl_Position, c1 = gl_in[1].gl_Position, c2 = gl_in[2].gl_Position;
+    if (c0.w > 0.0 && c1.w > 0.0 && c2.w > 0.0)
+    {
+        oss_listTriangle(c0, c1, c2);
+        return;
+    }
+    // A triangle reaching behind a perspective light's eye plane (a long caster beside a
+    // point light, partly in a neighbouring cube face): its part beyond the near plane, where
+    // the depth pass draws it and the rays are walked, as one or two triangles. Missing, the
+    // rays of its penumbrae (and the hard test at its edges) passed through it.
+    oss_list[2] = 1u; // its depth pass may draw part of it
+    float d0 = c0.z + c0.w, d1 = c1.z + c1.w, d2 = c2.z + c2.w;
+    if (d0 <= 0.0 && d1 <= 0.0 && d2 <= 0.0)
+        return; // wholly nearer than the near plane: outside the map
+    // Rotated so that the vertices beyond the near plane come first: one (a) or two (a, b).
+    vec4 a = c0, b = c1, c = c2;
+    float da = d0, db = d1, dc = d2;
+    if (d0 <= 0.0 && d1 > 0.0) { a = c1; b = c2; c = c0; da = d1; db = d2; dc = d0; }
+    else if (d0 <= 0.0) { a = c2; b = c0; c = c1; da = d2; db = d0; dc = d1; }
+    // Now a lies beyond; the polygon a b c cut by the plane keeps winding a -> b -> c.
+    if (db > 0.0 && dc > 0.0)
+        oss_listTriangle(a, b, c); // (not reached: a vertex lies behind the eye)
+    else if (db > 0.0) // a, b beyond, c nearer: quad a b bc ca
+    {
+        vec4 bc = oss_nearCut(b, c, db, dc), ca = oss_nearCut(c, a, dc, da);
+        oss_listTriangle(a, b, bc);
+        oss_listTriangle(a, bc, ca);
+    }
+    else if (dc > 0.0) // a, c beyond, b nearer: quad a ab bc c
+    {
+        vec4 ab = oss_nearCut(a, b, da, db), bc = oss_nearCut(b, c, db, dc);
+        oss_listTriangle(a, ab, bc);
+        oss_listTriangle(a, bc, c);
+    }
+    else // a alone beyond: triangle a ab ca
+        oss_listTriangle(a, oss_nearCut(a, b, da, db), oss_nearCut(c, a, dc, da));
 }
