@@ -13,7 +13,7 @@
 
 #pragma import_defines(OSS_MAX_SHADOW_SLOTS, OSS_CUBE_FACES, OSS_BASE_TEXTURE, OSS_DEBUG_MASK, OSS_DEBUG_CLASSES, OSS_MAX_SHADOW_LIGHTS, OSS_NUM_SHADOW_SLOTS)
 #pragma import_defines(OSS_SILHOUETTE_MAP, OSS_FILTER_SILHOUETTE, OSS_DEBUG_SILHOUETTE_PIXELS, OSS_DEBUG_SILHOUETTE_MAP, OSS_TRIANGLE_LISTS, OSS_MAX_LIST_SLOTS, OSS_SKIPPED_SLOTS, OSS_ALPHA_TEST)
-#pragma import_defines(OSS_DEBUG_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS)
+#pragma import_defines(OSS_DEBUG_VISIBILITY, OSS_FILTER_PCF, OSS_FILTER_PCSS, OSS_LIST_SOFT)
 // OSS_SKIPPED_SLOTS, bit s: slot s is a cube face with nothing to shadow (its newest build
 // drew no caster), left out: its term is 1 everywhere. The OSS_MAX_* and slot defines have
 // their defaults in the prelude (ShaderSource.cpp, shaderPrelude()).
@@ -61,7 +61,13 @@ float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk);
 #else
 #define OSS_SLOT_WALK(s) oss_walkLight[s]
 #endif
+#ifdef OSS_LIST_SOFT
+// Lights with a size: shadow rays at the penumbra's pixels (oss_shadow.frag.glsl).
+vec2 oss_listSizedTerm(int s, vec4 p, bool walk);
+#define OSS_SLOT_TERM(s) oss_listSizedTerm(s, oss_eyePosition, OSS_SLOT_WALK(s)).x
+#else
 #define OSS_SLOT_TERM(s) oss_listTerm(s, oss_pcf(oss_shadowMap[s], oss_eyeToShadow[s], oss_eyePosition), oss_eyePosition, OSS_SLOT_WALK(s))
+#endif
 #elif defined(OSS_FILTER_PCF) || defined(OSS_FILTER_PCSS)
 // SHADOW_MAP under a soft filter: oss_filterTerm() (oss_filter.frag.glsl).
 float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);

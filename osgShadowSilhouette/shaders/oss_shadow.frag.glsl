@@ -116,7 +116,7 @@ float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
 #elif defined(OSS_SILHOUETTE_MAP)
 #define OSS_MAP_TERM(s, p) oss_silhouetteTerm(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
-#define OSS_MAP_TERM(s, p) oss_listSizedTerm(s, p).x
+#define OSS_MAP_TERM(s, p) oss_listSizedTerm(s, p, true).x
 #elif defined(OSS_TRIANGLE_LISTS)
 #define OSS_MAP_TERM(s, p) oss_listTerm(s, OSS_PCF_TERM(s, p), p, true)
 #else
@@ -180,13 +180,18 @@ bool oss_coneBlocked(int s, vec4 p, vec2 slope)
 
 // Slot s's term under the lists (x) and its class (y: 0 the map's answer, 1 resolved exactly,
 // 2 the rays of a light with a size); a slot whose light has no size keeps the hard term.
-vec2 oss_listSizedTerm(int s, vec4 p)
+// `walk` false: the caller needs no exact answer here (the light does not reach the point's
+// side), the map's answer is returned. Called by the receivers' shading (oss_receiver.frag)
+// and by oss_shadowTerm() for the debug views and applications' programs.
+vec2 oss_listSizedTerm(int s, vec4 p, bool walk)
 {
     vec4 c = oss_eyeToShadow[s] * p;
     vec2 slope = oss_depthSlope(c.xyz / (c.w > 0.0 ? c.w : 1.0)); // uniform control flow
     float pcf = OSS_PCF_TERM(s, p);
     if (oss_listLightSize[s] <= 0.0)
-        return vec2(oss_listTerm(s, pcf, p, true), oss_listResolves(s, pcf, p) ? 1.0 : 0.0);
+        return vec2(oss_listTerm(s, pcf, p, walk), oss_listResolves(s, pcf, p) ? 1.0 : 0.0);
+    if (!walk)
+        return vec2(pcf, 0.0);
     return oss_listSoftTerm(s, pcf, oss_coneBlocked(s, p, slope), p);
 }
 #endif
@@ -457,7 +462,7 @@ vec2 oss_termClass(float v)
 #define OSS_SLOT_CLASS(s, p) oss_silhouetteClass(oss_shadowMap[s], oss_silhouetteMap[s], oss_eyeToShadow[s], p)
 #elif defined(OSS_TRIANGLE_LISTS) && defined(OSS_LIST_SOFT)
 vec2 oss_softClass(vec2 c) { return vec2(c.y > 1.5 ? c.x : step(0.5, c.x), c.y); }
-#define OSS_SLOT_CLASS(s, p) oss_softClass(oss_listSizedTerm(s, p))
+#define OSS_SLOT_CLASS(s, p) oss_softClass(oss_listSizedTerm(s, p, true))
 #elif defined(OSS_TRIANGLE_LISTS)
 vec2 oss_listClass(int s, vec4 eyePosition)
 {
