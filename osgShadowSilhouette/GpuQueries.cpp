@@ -153,11 +153,11 @@ bool GpuCounter::create(osg::RenderInfo& info, PerContext& c) const
                                                                         "GL_ARB_shader_atomic_counters", 4.2f))
             return false;
         ext->glGenBuffers(RING, c.ids);
-        const GLuint zero = 0;
+        const GLuint zero[ATOMIC_COUNTERS] = {};
         for (GLuint id : c.ids)
         {
             ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, id);
-            ext->glBufferData(GL_ATOMIC_COUNTER_BUFFER, sizeof(zero), &zero, GL_DYNAMIC_READ);
+            ext->glBufferData(GL_ATOMIC_COUNTER_BUFFER, sizeof(zero), zero, GL_DYNAMIC_READ);
         }
         ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
         return true;
@@ -170,18 +170,18 @@ bool GpuCounter::create(osg::RenderInfo& info, PerContext& c) const
     return true;
 }
 
-bool GpuCounter::collect(const osg::GLExtensions& ext, PerContext& c, unsigned int i, long long& value) const
+bool GpuCounter::collect(const osg::GLExtensions& ext, PerContext& c, unsigned int i, long long* values) const
 {
     if (atomic())
     {
         if (ext.glClientWaitSync(c.fences[i], 0, 0) == GL_TIMEOUT_EXPIRED) return false;
         ext.glDeleteSync(c.fences[i]);
         c.fences[i] = nullptr;
-        GLuint count = 0;
+        GLuint counts[ATOMIC_COUNTERS] = {};
         ext.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, c.ids[i]);
-        ext.glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(count), &count);
+        ext.glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(counts), counts);
         ext.glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
-        value = static_cast<long long>(count);
+        for (unsigned int k = 0; k < ATOMIC_COUNTERS; ++k) values[k] = static_cast<long long>(counts[k]);
         return true;
     }
     GLuint available = 0;
@@ -189,7 +189,7 @@ bool GpuCounter::collect(const osg::GLExtensions& ext, PerContext& c, unsigned i
     if (!available) return false;
     GLuint64 result = 0;
     ext.glGetQueryObjectui64v(c.ids[i], GL_QUERY_RESULT, &result);
-    value = static_cast<long long>(result);
+    values[0] = static_cast<long long>(result);
     return true;
 }
 
@@ -209,17 +209,17 @@ void GpuCounter::begin(osg::RenderInfo& info)
     for (unsigned int k = 0; k < RING; ++k)
     {
         const unsigned int i = (c.next + k) % RING;
-        long long value = 0;
-        if (!c.pending[i] || !collect(*ext, c, i, value)) continue;
+        long long values[ATOMIC_COUNTERS] = {0, -1};
+        if (!c.pending[i] || !collect(*ext, c, i, values)) continue;
         c.pending[i] = false;
-        _last.store(value);
+        for (unsigned int n = 0; n < ATOMIC_COUNTERS; ++n) _last[n].store(values[n]);
     }
     if (c.pending[c.next]) return; // the GPU is far behind: skip this frame rather than wait
     if (atomic())
     {
-        const GLuint zero = 0;
+        const GLuint zero[ATOMIC_COUNTERS] = {};
         ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, c.ids[c.next]);
-        ext->glBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(zero), &zero);
+        ext->glBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof(zero), zero);
         ext->glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
         ext->glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, ATOMIC_BINDING, c.ids[c.next]);
     }

@@ -185,7 +185,8 @@ void bindSoftLight(ModeFrame& mf, SlotCull& slot)
     mf.vd.listLight->setElement(slot.slot, osg::Vec4f(eye));
     mf.vd.listLightSize->setElement(slot.slot, float(size));
     mf.vd.filterScale->setElement(slot.slot, osg::Vec2f(penumbraScale(slot.pass.frustum, light.type, light.size)));
-    mf.vd.listSoftSamples->set(int(mf.settings.softSamples));
+    const int samples = int(mf.settings.softSamples);
+    mf.vd.listSoftSamples->set(samples, softFirstPass(samples));
     mf.eye.listSoft = true;
 }
 
@@ -247,9 +248,13 @@ public:
             mf.stats.silhouettePixels = mf.vd.exactCounter->getLastValue();
             if (frame.sizedLights && mf.stats.silhouettePixels >= 0)
             {
-                // Soft frames count the penumbra pixels that cast rays (and hard slots' silhouette pixels).
+                // Soft frames count the penumbra pixels that cast rays (and hard slots' silhouette
+                // pixels), and of those the ones that stopped after the first pass.
+                const long long samples = mf.settings.softSamples;
                 mf.stats.penumbraPixels = mf.stats.silhouettePixels;
-                mf.stats.shadowRays = mf.stats.penumbraPixels * (long long)mf.settings.softSamples;
+                mf.stats.penumbraAgreed = std::max(0LL, mf.vd.exactCounter->getLastValue(1));
+                mf.stats.shadowRays = mf.stats.penumbraPixels * samples -
+                                      mf.stats.penumbraAgreed * (samples - softFirstPass(int(samples)));
             }
         }
         mf.eye.edgeMasks = mf.settings.hybridEdgeMask;

@@ -214,7 +214,8 @@ std::vector<PropertyInfo> filterRows()
         {OSS_PROPERTY(SoftSamples), P::UINT, 64, 256, 1, 1024, "", {},
          "HYBRID (triangle lists) under a light with a size: the shadow rays cast from each penumbra pixel "
          "toward the light, each tested against the caster triangles of every texel it crosses",
-         "the answer converges to the exact visibility as it grows "
+         "the answer converges to the exact visibility as it grows; from 32 on (a multiple of 4) a pixel whose "
+         "first quarter of rays all agree, and its 2 x 2 quad's too, casts no more "
          "([docs/soft-shadows.md](docs/soft-shadows.md#hybrid-exact-penumbrae-shadow-rays-through-the-triangle-lists))"},
     };
 }

@@ -51,6 +51,15 @@ double lightSize(const osg::Light& light, const SizedLightSources* sources, Ligh
  *  -P00 R / P32 (OSG's row-vector matrices). 0 for size 0 or an invalid frustum. */
 osg::Vec2 penumbraScale(const LightFrustum& frustum, LightDescription::Type type, double size);
 
+/** HYBRID's shadow rays under a light with a size: of @p samples rays per pixel, the first
+ *  pass (a quarter: one point of each ring of four of the rays' spiral, when there are at
+ *  least 32 and a multiple of 4), whose answer a pixel keeps when its rays and its 2 x 2
+ *  quad's all agree (oss_listSoftTerm()); @p samples where there is no first pass. */
+inline int softFirstPass(int samples)
+{
+    return samples >= 32 && samples % 4 == 0 ? samples / 4 : samples;
+}
+
 /** How far, in texels, a filter reads around a point (a cube face's map must reach that far
  *  past its own square): 4 for the 2x2 PCF (the default margin), the window's half and two
  *  for FILTER_PCF, PCSS's largest radius and two for FILTER_PCSS; for SILHOUETTE_MAP's

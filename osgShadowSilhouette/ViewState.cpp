@@ -1,6 +1,7 @@
 #include "ViewState.h"
 
 #include "RenderLeaves.h"
+#include "SoftFilter.h"
 
 #include <osgShadowSilhouette/ShaderConstants>
 
@@ -49,7 +50,7 @@ void createListUniforms(ViewData& vd, unsigned int slots)
     vd.listRayFrame = new osg::Uniform(shader::LIST_RAY_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
     vd.listLight = new osg::Uniform(osg::Uniform::FLOAT_VEC4, shader::LIST_LIGHT, slots);
     vd.listLightSize = new osg::Uniform(osg::Uniform::FLOAT, shader::LIST_LIGHT_SIZE, slots);
-    vd.listSoftSamples = new osg::Uniform(shader::LIST_SOFT_SAMPLES, 64);
+    vd.listSoftSamples = new osg::Uniform(shader::LIST_SOFT_SAMPLES, 64, softFirstPass(64));
     vd.listEyeToPattern = new osg::Uniform(shader::LIST_EYE_TO_PATTERN, osg::Matrixf());
     vd.lookupBiasFrame = new osg::Uniform(shader::LOOKUP_BIAS_FRAME, osg::Vec4f(0.0f, 0.0f, 0.0f, 0.0f));
 }

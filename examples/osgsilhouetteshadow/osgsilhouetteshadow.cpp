@@ -248,7 +248,7 @@ int main(int argc, char** argv)
         // HYBRID's penumbra pixels and rays are counted only while the technique records
         // statistics (a counter in its eye pass): a few frames after the timed ones, so that
         // the counter does not run in them.
-        long long penumbraPixels = s.penumbraPixels, shadowRays = s.shadowRays;
+        long long penumbraPixels = s.penumbraPixels, shadowRays = s.shadowRays, agreed = s.penumbraAgreed;
         if (technique->getMode() == SilhouetteShadowTechnique::HYBRID)
         {
             osg::ref_ptr<osg::Stats> stats = new osg::Stats("osgsilhouetteshadow");
@@ -256,9 +256,10 @@ int main(int argc, char** argv)
             renderer.timeFrames(0, 3); // the counts come back a frame or two late
             const SilhouetteShadowTechnique::Statistics counted = technique->getStatistics();
             technique->setStats(nullptr);
-            penumbraPixels = counted.penumbraPixels, shadowRays = counted.shadowRays;
+            penumbraPixels = counted.penumbraPixels, shadowRays = counted.shadowRays, agreed = counted.penumbraAgreed;
         }
-        std::printf("penumbra_pixels_cast=%lld shadow_rays=%lld\n", penumbraPixels, shadowRays);
+        std::printf("penumbra_pixels_cast=%lld penumbra_agreed=%lld shadow_rays=%lld\n", penumbraPixels, agreed,
+                    shadowRays);
     }
 
     if (!options.classes.empty() && technique)

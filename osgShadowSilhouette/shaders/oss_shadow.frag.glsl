@@ -128,7 +128,7 @@ float oss_filterTerm(int s, sampler2D map, mat4 eyeToShadow, vec4 eyePosition);
 uniform float oss_listLightSize[OSS_MAX_SHADOW_SLOTS]; // 0: the slot's light is a point (hard)
 uniform vec4 oss_listLight[OSS_MAX_SHADOW_SLOTS];      // eye space: (toward the light, 0) or (position, 1)
 uniform vec2 oss_filterScale[OSS_MAX_SHADOW_SLOTS];    // footprint radius per unit of depth (penumbraScale())
-vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition);
+vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition, bool walk);
 const float OSS_CONE_MAX_TEXELS = 48.0; // ShaderConstants: LIST_CONE_MAX_TEXELS
 
 // Whether one gather of slot s's depth map, `o` texels from the point (window position t),
@@ -190,9 +190,7 @@ vec2 oss_listSizedTerm(int s, vec4 p, bool walk)
     float pcf = OSS_PCF_TERM(s, p);
     if (oss_listLightSize[s] <= 0.0)
         return vec2(oss_listTerm(s, pcf, p, walk), oss_listResolves(s, pcf, p) ? 1.0 : 0.0);
-    if (!walk)
-        return vec2(pcf, 0.0);
-    return oss_listSoftTerm(s, pcf, oss_coneBlocked(s, p, slope), p);
+    return oss_listSoftTerm(s, pcf, walk && oss_coneBlocked(s, p, slope), p, walk);
 }
 #endif
 

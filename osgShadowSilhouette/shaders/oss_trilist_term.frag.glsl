@@ -12,6 +12,8 @@
 // Left out of the programs of a context older than GL 4.3 (no comment on a pragma line: OSG
 // reads every word there as a define).
 #pragma requires(OSS_GLSL_430)
+// Per-pixel derivatives within a 2 x 2 quad (the soft term's agreement test) where available.
+#extension GL_ARB_derivative_control : enable
 #ifdef OSS_TRIANGLE_LISTS
 // Slots 0 .. OSS_MAX_LIST_SLOTS-1 have lists (at most 12, one storage block each: the
 // technique sets it to the slots in use); the others answer with their PCF.
@@ -46,6 +48,7 @@ layout(std430, binding = 1) readonly buffer OssListHeads { uint data[]; } oss_li
 #ifdef OSS_COUNT_EXACT
 layout(early_fragment_tests) in;
 layout(binding = 0, offset = 0) uniform atomic_uint oss_exactFragments;
+layout(binding = 0, offset = 4) uniform atomic_uint oss_stoppedEarly; // soft: pixels whose first pass sufficed
 #endif
 uniform uvec4 oss_listCapacity[OSS_MAX_SHADOW_SLOTS];  // nodes, triangles, grid size, 0 of each slot's buffer
 uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective light
@@ -277,7 +280,7 @@ bool oss_listResolves(int s, float pcf, vec4 eyePosition)
 // missed; the visibility is the share of rays that reach the light.
 uniform vec4 oss_listLight[OSS_MAX_SHADOW_SLOTS];      // eye space: (toward the light, 0) or (position, 1)
 uniform float oss_listLightSize[OSS_MAX_SHADOW_SLOTS]; // radius; directional: 1 - cos(angular radius); 0: hard
-uniform int oss_listSoftSamples;
+uniform ivec2 oss_listSoftSamples; // rays per pixel, and the first pass of them (softFirstPass())
 uniform mat4 oss_listEyeToPattern; // eye space -> world cells of 1e-3 of the scene's radius
 const int OSS_MAX_WALK_TEXELS = 1024;
 
@@ -391,7 +394,35 @@ int oss_rayWalk(int s, vec3 a, vec3 b, float limit)
     return result;
 }
 
-// Sample k of n of slot s's light seen from eye-space point p, stratified (a Fibonacci
+// Of ring i's four spiral points (4i .. 4i+3, oss_lightSample()), the one whose angle lies
+// nearest point i of a spiral of a quarter as many points: the first pass's (softFirstPass()).
+int oss_ringChoice(int i)
+{
+    float target = fract(float(i) * 0.618033989);
+    int best = 0;
+    float bestD = 2.0;
+    for (int o = 0; o < 4; ++o)
+    {
+        float d = abs(fract(float(4 * i + o) * 0.618033989) - target);
+        d = min(d, 1.0 - d);
+        best = d < bestD ? o : best;
+        bestD = min(d, bestD);
+    }
+    return best;
+}
+
+// The spiral point of the k-th ray of n with a first pass of `first` rays: one point of each
+// ring of four (oss_ringChoice()) in the first pass, the other three of each ring after it;
+// with no first pass (first = n), point k.
+int oss_spiralIndex(int k, int n, int first)
+{
+    if (first >= n) return k;
+    if (k < first) return 4 * k + oss_ringChoice(k);
+    int j = k - first, i = j / 3, m = j % 3;
+    return 4 * i + m + (m >= oss_ringChoice(i) ? 1 : 0);
+}
+
+// Spiral point k of n of slot s's light seen from eye-space point p, stratified (a Fibonacci
 // spiral: the k-th of n equal areas of the disc or cone, the golden angle apart) and turned
 // and shifted by `jitter`: an eye-space direction (w 0, directional light; uniform in solid
 // angle) or point (w 1; uniform in area on the disc facing p), as the reference samples them.
@@ -443,39 +474,68 @@ float oss_listNearest(int s, uint word)
     return word == 0u ? 1e30 : q - (1e-4 + 1e-4 * abs(q)); // less a margin for the rounding
 }
 
+// Rays from..to-1 of n (first pass: `first` of them; oss_spiralIndex()) of slot s's soft term
+// (oss_listSoftTerm()) from `origin` (p: its light texture point, c0: its clip position): how
+// many reach the light; `cutOnly` set when one meets only alpha-tested triangles.
+int oss_castRays(int s, vec4 origin, vec4 p, vec4 c0, ivec4 range, vec2 jitter, inout bool cutOnly)
+{
+    int from = range.x, to = range.y, n = range.z, first = range.w;
+    float limit = p.z - (1e-4 + 1e-4 * abs(p.z)); // a triangle through the point itself does not count
+    float qNear = oss_listNearest(s, to > from ? oss_listData(s, 3u) : 0u);
+    int lit = 0;
+    for (int k = from; k < to; ++k)
+    {
+        vec4 target = oss_lightSample(s, origin.xyz, oss_spiralIndex(k, n, first), n, jitter);
+        vec3 b = oss_clipToMap(p.xyz, oss_rayEnd(s, origin, c0, target), qNear);
+        int r = oss_rayWalk(s, p.xyz, b, limit);
+        lit += r == 1 ? 1 : 0;
+        cutOnly = cutOnly || r == 2;
+    }
+    return lit;
+}
+
 // The visibility of slot s's light at an eye-space position given its 2x2 PCF and whether
 // the blocker search found a blocker in the light's footprint (`penumbra`): 1 where nothing
 // is found (the map's lit class), else the share of oss_listSoftSamples rays that reach the
 // light; the PCF's hard answer where the lists cannot say (overflow, or a ray meeting only
-// alpha-tested triangles). x: the visibility; y: its class (0 the map's, 1 rays cast, all
-// blocked or none, 2 rays cast, some blocked: a penumbra). Call in uniform control flow.
-vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition)
+// alpha-tested triangles); the PCF where `walk` is false. x: the visibility; y: its class (0
+// the map's, 1 rays cast, all blocked or none, 2 rays cast, some blocked: a penumbra). Call
+// in uniform control flow (derivatives).
+vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition, bool walk)
 {
     vec4 origin = oss_listRayOrigin(eyePosition);
     vec4 p = oss_listPoint(s, origin);
-    bool walk = p.w > 0.0 && (penumbra || pcf < 1.0 || oss_listUncertain(s, pcf, eyePosition));
+    walk = walk && p.w > 0.0 && (penumbra || pcf < 1.0 || oss_listUncertain(s, pcf, eyePosition));
 #ifdef OSS_COUNT_EXACT
     if (walk) atomicCounterIncrement(oss_exactFragments);
 #endif
     uvec4 header = walk ? oss_listData4(s, 0u) : uvec4(0u);
     bool overflow = header.x > oss_listCapacity[s].x || header.y > oss_listCapacity[s].y;
-    int n = walk && !overflow ? max(oss_listSoftSamples, 1) : 0;
+    int n = walk && !overflow ? max(oss_listSoftSamples.x, 1) : 0;
     uvec3 cellOf = uvec3(ivec3(floor((oss_listEyeToPattern * origin).xyz)));
     uint h = oss_hash(cellOf.x ^ oss_hash(cellOf.y ^ oss_hash(cellOf.z ^ uint(s))));
     vec2 jitter = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
-    float limit = p.z - (1e-4 + 1e-4 * abs(p.z)); // a triangle through the point itself does not count
     vec4 c0 = oss_eyeToShadow[s] * origin;
-    float qNear = oss_listNearest(s, header.w);
-    int lit = 0;
     bool cutOnly = false;
-    for (int k = 0; k < n; ++k)
-    {
-        vec3 b = oss_clipToMap(p.xyz, oss_rayEnd(s, origin, c0, oss_lightSample(s, origin.xyz, k, n, jitter)), qNear);
-        int r = oss_rayWalk(s, p.xyz, b, limit);
-        lit += r == 1 ? 1 : 0;
-        cutOnly = cutOnly || r == 2;
-    }
-    float v = n > 0 ? float(lit) / float(n) : pcf;
+    // The first pass, a quarter of the rays, one of each ring of four of the spiral (a
+    // spiral of its own, nearly): when its rays all agree and so do those of the pixel's
+    // neighbours in its 2 x 2 quad, the pixel takes their answer (inside an umbra, or a point
+    // the map called shadowed that sees the whole light); else the other three quarters follow.
+    int first = min(max(oss_listSoftSamples.y, 1), n);
+    int lit = oss_castRays(s, origin, p, c0, ivec4(0, first, n, first), jitter, cutOnly);
+    float share = first > 0 ? float(lit) / float(first) : pcf;
+#ifdef GL_ARB_derivative_control
+    bool quadAgrees = dFdxFine(share) == 0.0 && dFdyFine(share) == 0.0;
+#else
+    bool quadAgrees = dFdx(share) == 0.0 && dFdy(share) == 0.0;
+#endif
+    bool agree = (lit == 0 || lit == first) && quadAgrees;
+    int end = agree ? first : n;
+#ifdef OSS_COUNT_EXACT
+    if (walk && end < n) atomicCounterIncrement(oss_stoppedEarly);
+#endif
+    lit += oss_castRays(s, origin, p, c0, ivec4(first, end, n, first), jitter, cutOnly);
+    float v = n > 0 ? float(lit) / float(end) : pcf;
     v = walk && (overflow || cutOnly) ? step(0.5, pcf) : v;
     return vec2(v, walk ? (v > 0.0 && v < 1.0 ? 2.0 : 1.0) : 0.0);
 }

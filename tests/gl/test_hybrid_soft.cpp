@@ -32,11 +32,13 @@ struct SoftCase
     double bound256;   ///< ... at 256 rays
 };
 
-/** vis_mae_penumbra bounds: 0.02 at 64 rays, 0.01 at 256; vis_p99_penumbra at 256 rays
- *  0.05. Measured 0.0105 / 0.0045 (sun), 0.0108 / 0.0044 (point), 0.0114 / 0.0051 (spot),
- *  p99 at 256 rays 0.017, 0.016, 0.028; docs/soft-shadows.md. With the blocker search's
- *  footprint that of a disc facing the map's axis (not the point), the point light's outer
- *  rims off its cube faces' axes read lit: 0.0161 / 0.0102, p99 0.121. */
+/** vis_mae_penumbra bounds: 0.02 at 64 rays, 0.01 at 256; vis_p99_penumbra 0.06 at 64 rays
+ *  and 0.05 at 256. Measured 0.0111 / 0.0046 (sun), 0.0114 / 0.0044 (point), 0.0117 / 0.0047
+ *  (spot), p99 0.040 / 0.023, 0.040 / 0.016, 0.042 / 0.017; docs/soft-shadows.md. With the
+ *  blocker search's footprint that of a disc facing the map's axis (not the point), the point
+ *  light's outer rims off its cube faces' axes read lit: 0.0161 / 0.0102, p99 0.121. With the
+ *  first pass's answer kept on the pixel's own rays alone (not its quad's), the penumbrae's
+ *  edges read lit or shadowed: p99 at 64 rays 0.084, 0.095, 0.103. */
 const SoftCase kCases[] = {
     {"Sun2Degrees", "sun", 2.0, 0.02, 0.01},
     {"Point03", "point", 0.3, 0.02, 0.01},
@@ -96,6 +98,7 @@ TEST_P(HybridSoft, ConvergesToTheExactPenumbra)
     EXPECT_GT(k64.penumbraPixels, 500);
     EXPECT_LE(k64.visMaePenumbra, c.bound64);
     EXPECT_LE(k256.visMaePenumbra, c.bound256);
+    EXPECT_LE(k64.visP99Penumbra, 0.06) << "the first pass kept an answer the other rays would change";
     EXPECT_LE(k256.visP99Penumbra, 0.05) << "a penumbra's pixels read lit or shadowed";
     EXPECT_LE(k256.hardWrongPct, 0.05);
 }
@@ -246,7 +249,10 @@ TEST(HybridSoftShadows, StatisticsAndClassesShowThePenumbra)
     r.renderer->timeFrames(0, 4);
     const SilhouetteShadowTechnique::Statistics s = r.technique->getStatistics();
     EXPECT_GT(s.penumbraPixels, 500);
-    EXPECT_EQ(s.shadowRays, 32 * s.penumbraPixels);
+    // The umbra's pixels agree after the first pass of 8 rays; the penumbra's cast all 32.
+    EXPECT_GT(s.penumbraAgreed, 100);
+    EXPECT_LT(s.penumbraAgreed, s.penumbraPixels - 100);
+    EXPECT_EQ(s.shadowRays, 32 * s.penumbraPixels - 24 * s.penumbraAgreed);
     double rays = 0.0;
     EXPECT_TRUE(stats->getAttribute(s.frameNumber, SilhouetteShadowTechnique::STATS_SHADOW_RAYS, rays));
     EXPECT_EQ(rays, double(s.shadowRays));
