@@ -55,6 +55,8 @@ uniform int oss_listSlotPerspective[OSS_MAX_SHADOW_SLOTS]; // 1: perspective lig
 uniform mat4 oss_eyeToShadow[OSS_MAX_SHADOW_SLOTS];
 uniform vec4 oss_listRayFrame;            // eye-space centre of the shadowed scene's bound, offset at it
 uniform float oss_listRayOffsetPerDistance; // offset per unit of distance from that centre
+uniform vec4 oss_lookupBiasFrame;         // the map lookup's world bias (oss_shadow.frag.glsl): centre, bias there
+uniform float oss_lookupBiasPerDistance;  // its growth per unit of distance from the centre
 
 // The i-th vec4 of slot s's buffer (constant indices: see oss_shadow.frag.glsl).
 uvec4 oss_listData4(int s, uint i)
@@ -146,13 +148,15 @@ uint oss_listHead(int s, vec2 p, uint grid, out uint count)
     return inside ? head : 0u;
 }
 
-// 1 lit, 0 shadowed, -1 when the lists cannot say (then the caller falls back to the PCF):
-// they overflowed this frame, or the only triangles between the point and the light are
+// 1 lit, 0 shadowed, -1 when the lists cannot say (then the caller falls back to the PCF).
+// The ray from texture-space point p at depth q is blocked by an opaque listed triangle that
+// contains p and lies more than `margin` (oss_listMargin()) nearer the light. -1: the lists
+// overflowed this frame, or the only triangles between the point and the light are
 // alpha-tested ones (their cut-outs are in the depth map, not in the lists).
 // Written as data flow, not early returns: SIMD rasterizers (llvmpipe) run a loop as long as
 // any lane of the block needs it, so a lane that does not walk must have a count of 0. The
 // buffer is read only by the lanes that walk (the loads sit behind the branch).
-float oss_listWalk(int s, vec2 p, float q, bool walk)
+float oss_listWalk(int s, vec2 p, float q, float margin, bool walk)
 {
     uvec4 capacity = oss_listCapacity[s];
     uint grid = capacity.z;
@@ -169,7 +173,7 @@ float oss_listWalk(int s, vec2 p, float q, bool walk)
         node = oss_listHead(s, p, grid, count);
         count = overflow ? 0u : count;
     }
-    float limit = q - (1e-4 + 1e-4 * abs(q)); // a triangle through the point itself does not count
+    float limit = q - margin; // the surface the ray leaves does not count
     uint nodes = (4u + 2u * grid * grid) / 4u;    // in vec4s: two nodes each
     uint triangles = nodes + capacity.x / 2u;
     float lit = 1.0;
@@ -247,19 +251,40 @@ vec4 oss_listRayOrigin(vec4 eyePosition)
     return vec4(p + n * offset, 1.0);
 }
 
+// How much nearer the light than the shadow ray's origin (eye space) a listed triangle must
+// lie to block the ray, in slot s's list depth q: a distance of OSS_LIST_MARGIN times the
+// map lookup's world bias there (1e-4 of the shadowed scene's radius plus 1e-4 per unit of
+// distance from its centre), the same for every kind of light. Surfaces closer than that
+// to the visible one are where rasterization and the exact reference may see different
+// ones (coincident faces, a part resting on another: docs/shadow-volumes.md, "The lists'
+// depth margin"). q is z for an orthographic light (its rate along the light: the length of
+// the matrix's z row) and -1/w for a perspective one (at most |w row| / w^2).
+const float OSS_LIST_MARGIN = 10.0;
+float oss_listMargin(int s, vec4 origin)
+{
+    float world = oss_lookupBiasFrame.w + oss_lookupBiasPerDistance * length(origin.xyz - oss_lookupBiasFrame.xyz);
+    mat4 m = oss_eyeToShadow[s];
+    vec4 wRow = vec4(m[0].w, m[1].w, m[2].w, m[3].w);
+    float w = dot(wRow, origin);
+    float perUnit = oss_listSlotPerspective[s] != 0 ? length(wRow.xyz) / (w * w)
+                                                   : length(vec3(m[0].z, m[1].z, m[2].z));
+    return OSS_LIST_MARGIN * world * perUnit;
+}
+
 // The shadow term of slot s given its 2x2 PCF: exact where the PCF cannot be trusted
 // (oss_listUncertain), the PCF elsewhere (and where `walk` is false: the caller does not
 // need the exact answer there).
 float oss_listTerm(int s, float pcf, vec4 eyePosition, bool walk)
 {
     if (s >= OSS_MAX_LIST_SLOTS) return pcf;
-    vec4 p = oss_listPoint(s, oss_listRayOrigin(eyePosition));
+    vec4 origin = oss_listRayOrigin(eyePosition);
+    vec4 p = oss_listPoint(s, origin);
     bool front = p.w > 0.0;
     bool uncertain = front && oss_listUncertain(s, pcf, eyePosition);
 #ifdef OSS_COUNT_EXACT
     if (uncertain) atomicCounterIncrement(oss_exactFragments);
 #endif
-    float lit = oss_listWalk(s, p.xy, p.z, walk && uncertain);
+    float lit = oss_listWalk(s, p.xy, p.z, oss_listMargin(s, origin), walk && uncertain);
     lit = walk && front ? lit : pcf;
     return uncertain ? (lit < 0.0 ? step(0.5, pcf) : lit) : pcf;
 }

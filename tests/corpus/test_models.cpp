@@ -68,7 +68,6 @@ const std::map<std::string, std::string> kKnownFailures = {
     {"Teapots/volume/point", "0.025%: single pixels on shadow outlines, where the reference's shadow boundary "
                              "crosses the pixel (the point light's shadows of the bodies' folds, on the ground and "
                              "on the bodies)"},
-    {"Test3ds/hybrid/point", "0.0105%: just over the bound, at the point light's shadow edges"},
     {"Regression3429812/volume/directional",
      "0.033%: SHADOW_VOLUME on 4 triangles with a non-manifold edge, all flipped"},
     {"Regression3429812/volume/point", "0.090%: SHADOW_VOLUME on 4 triangles with a non-manifold edge, all flipped"},

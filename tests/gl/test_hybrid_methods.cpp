@@ -464,3 +464,49 @@ TEST(HybridMethods, OverflowingListsAreReadBackAndRebuiltLarger)
     ASSERT_TRUE(same.valid) << same.error;
     EXPECT_EQ(same.wrongPixels, 0) << "the rebuilt lists should give the picture of lists with room to spare";
 }
+
+namespace {
+
+/** A plate `height` thick lying on the ground (x in [0, 1], y in [-1, 1]) under a point
+ *  light 20 units away at 45 degrees on its +x side, seen from close by: the plate's edge
+ *  at x = 0 casts a strip height wide on the ground at x < 0 (each point of it sees the
+ *  plate's top `height` / sin 45 degrees nearer the light). */
+osshar::PreparedScene plateOnGround(float height)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(osshar::makeGround(0, 0, 16));
+    geode->addDrawable(osshar::makeBox(osg::Vec3(0.5f, 0.0f, 0.5f * height), osg::Vec3(1.0f, 2.0f, height)));
+    osshar::PreparedScene scene;
+    scene.content = new osg::Group;
+    scene.content->addChild(geode.get());
+    scene.content->addChild(osshar::makeLight(osg::Vec4(14.14f, 0.0f, 14.14f, 1.0f), 0));
+    scene.lights = osshar::findLights(scene.content.get());
+    scene.view = {osg::Vec3d(-0.35, -0.45, 0.45), osg::Vec3d(0.0, 0.0, 0.0), osg::Vec3d(0, 0, 1), 40.0};
+    return scene;
+}
+
+} // namespace
+
+// The lists leave out the triangles that lie less than a margin nearer the light than the
+// shadow ray's origin (rasterization and the exact reference may see different surfaces
+// closer than that). The margin was 1e-4 + 1e-4 |q| in the lists' depth q, which for a point
+// light (q = -1/w) is a distance of about 1e-4 w^2 along the ray: 0.04 units at 20 units from
+// the light, so a step 0.01 high (a plate on the ground, test1.3ds's boxes of slightly
+// different heights) cast no shadow. The margin is now a distance, 1e-4 of the scene's
+// radius plus 1e-4 per unit from its centre, for every kind of light (oss_listMargin()).
+TEST(HybridMethods, ListsShadowAStepThinnerThanTheirDepthMarginWas)
+{
+    ShadowedRender r(plateOnGround(0.01f), "hybrid", 1024, 512, 384);
+    ASSERT_TRUE(r.valid());
+    r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS);
+    const ossref::Mask reference = r.reference();
+    long long shadowed = 0;
+    for (std::size_t i = 0; i < reference.value.size(); ++i) shadowed += reference.value[i] == ossref::MASK_NO_LIGHT;
+    ASSERT_GT(shadowed, 2000) << "the plate's strip should cover thousands of pixels";
+    const ossref::Comparison cmp = ossref::compareMasks(r.mask(), reference);
+    ASSERT_TRUE(cmp.valid) << cmp.error;
+    std::cout << "plate 0.01 thick: " << shadowed << " shadowed pixels in the reference, " << cmp.wrongPixels
+              << " wrong\n";
+    EXPECT_LT(cmp.wrongPct, 0.01) << cmp.wrongPixels << " wrong pixels of " << cmp.geometryPixels;
+    EXPECT_EQ(cmp.coverageMismatch, 0);
+}
