@@ -505,7 +505,7 @@ float oss_listNearest(int s, uint word)
 int oss_castRays(int s, vec4 origin, vec4 p, vec4 c0, ivec4 range, vec2 jitter, inout bool cutOnly)
 {
     int from = range.x, to = range.y, n = range.z, first = range.w;
-    float limit = p.z - (1e-4 + 1e-4 * abs(p.z)); // a triangle through the point itself does not count
+    float limit = p.z - oss_listMargin(s, origin); // the surface the ray leaves does not count
     float qNear = oss_listNearest(s, to > from ? oss_listData(s, 3u) : 0u);
     int lit = 0;
     for (int k = from; k < to; ++k)
