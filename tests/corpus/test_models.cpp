@@ -64,17 +64,14 @@ const Mode kModes[] = {
  *  model/mode/light -> the measured error and the defect behind it. */
 const std::map<std::string, std::string> kKnownFailures = {
     {"SpiderStl/volume/directional",
-     "0.023%: single pixels on shadow outlines, where the side quad's depth and the receiver's fall within the "
-     "depth buffer's resolution (near plane 0.008 at far 16; 0.013% without the side quads' one-unit polygon "
-     "offset); not the winding: a copy wound consistently measures the same"},
-    {"SpiderStl/volume/point", "0.035%: single pixels on shadow outlines, as with the directional light"},
-    {"Teapots/volume/point", "0.025%: single pixels on shadow outlines, where the reference's shadow boundary "
+     "0.0134%: single pixels on shadow outlines, where the side quad's depth and the receiver's fall within the "
+     "depth buffer's resolution (near plane 0.008 at far 16); not the winding: a copy wound consistently measures "
+     "the same"},
+    {"SpiderStl/volume/point", "0.0160%: single pixels on shadow outlines, as with the directional light"},
+    {"Teapots/volume/point", "0.0147%: single pixels on shadow outlines, where the reference's shadow boundary "
                              "crosses the pixel (the point light's shadows of the bodies' folds, on the ground and "
                              "on the bodies)"},
     {"Test3ds/hybrid/point", "0.0105%: just over the bound, at the point light's shadow edges"},
-    {"Regression3429812/volume/point",
-     "0.0147%: one pixel per row along the shadow's outlines on the ground, moved by the side quads' polygon "
-     "offset of one depth unit (0.0077% measured without it)"},
 };
 
 /** Models whose mask and reference disagree on coverage in a few pixels, in every mode and
