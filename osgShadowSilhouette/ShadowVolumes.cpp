@@ -22,6 +22,19 @@ namespace {
 
 /** Polygon offset factor of the light cap (in units of the cap's own depth slope per pixel). */
 constexpr float LIGHT_CAP_SLOPE_OFFSET = 1.0f;
+/** Polygon offset units of the light cap (depth buffer units), on top of its slope. */
+constexpr float LIGHT_CAP_UNITS = 4.0f;
+/** Polygon offset units of a light cap seen from a culled side (culledCapState()). */
+constexpr float CULLED_CAP_UNITS = 1.0f;
+
+/** A caster whose frame's origin lies farther from its centre than this many radii of its
+ *  bounding box has its volume's sides drawn about its centre (ShadowVolumeGroup::rebuild):
+ *  the model-view-projection's float terms grow with that distance, and the rounding of
+ *  terms some hundred times the caster's size moved the outlines of its shadow on the
+ *  receivers (OBJ/regr_3429812.obj of the corpus: 200 radii, a fifth of a pixel). Nearer,
+ *  the caster's own frame is kept: its rounding is the eye pass's, and moving the frame by
+ *  a fraction of a radius only trades some outline pixels for others (teapots.DAE). */
+constexpr double FAR_ORIGIN_RADII = 8.0;
 
 /** Bounds of a volume's geometry: the caster's own box (its vertices at infinity have none). */
 class CasterBoundCallback : public osg::Drawable::ComputeBoundingBoxCallback
@@ -66,6 +79,23 @@ osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawEl
     return g;
 }
 
+/** The volume's vertices about @p origin: the finite ones (w = 1) less @p origin, in double,
+ *  those at infinity (w = 0, directions) as they are. */
+osg::ref_ptr<osg::Vec4Array> verticesAbout(const ShadowVolume& volume, const osg::Vec3d& origin)
+{
+    osg::ref_ptr<osg::Vec4Array> out = new osg::Vec4Array(volume.vertices.size());
+    for (std::size_t i = 0; i < volume.vertices.size(); ++i)
+    {
+        const osg::Vec4f& v = volume.vertices[i];
+        if (v.w() == 0.0f)
+            (*out)[i] = v;
+        else
+            (*out)[i].set(float(double(v.x()) - origin.x()), float(double(v.y()) - origin.y()),
+                          float(double(v.z()) - origin.z()), 1.0f);
+    }
+    return out;
+}
+
 osg::ref_ptr<osg::DrawElementsUInt> drawRange(const ShadowVolume& volume, const IndexRange& range)
 {
     const auto first = volume.indices.begin() + range.first;
@@ -78,13 +108,14 @@ osg::ref_ptr<osg::DrawElementsUInt> drawRange(const ShadowVolume& volume, const 
  *  reversed), so the rasterizer's depth plane is set up from another vertex and its depths
  *  differ from the surface's in the last bits, by an amount that grows with the depth slope
  *  (llvmpipe: whole triangles of false shadow on faces seen edge-on). So the cap, and only
- *  the cap, is pushed back by its slope as well: the sides and the dark cap keep the
- *  one-unit offset, since a slope term there would move the shadow's outline on receivers. */
+ *  the cap, is pushed back by its slope and LIGHT_CAP_UNITS. The sides and the dark cap
+ *  have no offset: any moves the shadow's outline on the receivers (one unit: 36 / 55
+ *  wrong pixels on the corpus's Spider_ascii.stl against 21 / 25 without). */
 osg::ref_ptr<osg::StateSet> lightCapState()
 {
     osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
     const auto on = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
-    ss->setAttributeAndModes(new osg::PolygonOffset(LIGHT_CAP_SLOPE_OFFSET, 1.0f), on);
+    ss->setAttributeAndModes(new osg::PolygonOffset(LIGHT_CAP_SLOPE_OFFSET, LIGHT_CAP_UNITS), on);
     return ss;
 }
 
@@ -94,13 +125,14 @@ osg::ref_ptr<osg::StateSet> lightCapState()
  *  wall seen edge-on from inside lies a few hundredths in front of the lid). So the cap is
  *  drawn twice, each time with GL's face culling keeping the cap triangles seen from one
  *  side: with the slope offset (`offset`) where the eye sees the side of the face the eye
- *  pass draws, with the volumes' one unit where it sees the culled side. `cull` names the
+ *  pass draws, with CULLED_CAP_UNITS only where it sees the culled side. `cull` names the
  *  side this draw leaves out (the volume's FrontFace makes FRONT the side its triangles'
  *  own counter-clockwise winding faces, mirrored or not). */
 osg::ref_ptr<osg::StateSet> culledCapState(bool offset, osg::CullFace::Mode cull)
 {
     osg::ref_ptr<osg::StateSet> ss = offset ? lightCapState() : osg::ref_ptr<osg::StateSet>(new osg::StateSet);
     const auto on = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    if (!offset) ss->setAttributeAndModes(new osg::PolygonOffset(0.0f, CULLED_CAP_UNITS), on);
     ss->setMode(GL_CULL_FACE, on);
     ss->setAttribute(new osg::CullFace(cull), on);
     return ss;
@@ -230,17 +262,53 @@ ShadowVolumeGroup::Entry ShadowVolumeGroup::createEntry() const
     return e;
 }
 
+void ShadowVolumeGroup::assembleSwitch(Entry& e, const osg::Vec3d& origin) const
+{
+    const auto centredAt = [&origin](osg::Drawable* drawable) {
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(drawable);
+        geode->setCullingActive(false);
+        osg::ref_ptr<osg::MatrixTransform> about = new osg::MatrixTransform(osg::Matrixd::translate(origin));
+        about->setCullingActive(false);
+        about->addChild(geode.get());
+        return about;
+    };
+    osg::ref_ptr<osg::Group> fail = new osg::Group, pass = new osg::Group;
+    osg::ref_ptr<osg::Geode> caps = new osg::Geode;
+    for (const osg::ref_ptr<osg::Geometry>& cap : e.lightCaps) caps->addDrawable(cap.get());
+    caps->setCullingActive(false);
+    fail->addChild(centredAt(e.zfail.get()).get());
+    fail->addChild(caps.get());
+    pass->addChild(centredAt(e.zpass.get()).get());
+    fail->setStateSet(_zfailState.get());
+    pass->setStateSet(_zpassState.get());
+    fail->setCullingActive(false);
+    pass->setCullingActive(false);
+    e.zSwitch->removeChildren(0, e.zSwitch->getNumChildren());
+    e.zSwitch->addChild(fail.get());
+    e.zSwitch->addChild(pass.get());
+}
+
 void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
 {
     const MeshAdjacency& mesh = e.caster.mesh->getAdjacency();
     _extractor.buildVolume(mesh, HomogeneousLight{light}, e.caster.world, e.silhouette, e.volume);
 
-    osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
+    // The light cap lies on the caster's faces and is drawn in the caster's frame, as the eye
+    // pass draws them, so that it rounds as they do. When that frame's origin lies far off
+    // for the caster's size, the sides and the dark cap are drawn about the caster's centre
+    // (verticesAbout()), so that their depths away from the caster do not carry the frame's
+    // rounding; otherwise in the caster's frame too.
     const osg::BoundingBox box = e.caster.geometry->getBoundingBox();
+    const bool farOrigin = box.valid() && box.center().length() > FAR_ORIGIN_RADII * box.radius();
+    const osg::Vec3d origin(farOrigin ? box.center() : osg::Vec3());
+    osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
+    osg::ref_ptr<osg::Vec4Array> centred = verticesAbout(e.volume, origin);
+    const osg::BoundingBox centredBox(box._min - osg::Vec3(origin), box._max - osg::Vec3(origin));
     osg::ref_ptr<osg::DrawElementsUInt> sidesAndDarkCap = drawRange(e.volume, e.volume.sides);
     osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
     sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
-    e.zfail = volumeGeometry(vertices.get(), sidesAndDarkCap.get(), box);
+    e.zfail = volumeGeometry(centred.get(), sidesAndDarkCap.get(), centredBox);
     e.lightCaps.clear();
     const auto addCap = [&](osg::DrawElementsUInt* indices, osg::StateSet* state) {
         e.lightCaps.push_back(volumeGeometry(vertices.get(), indices, box));
@@ -275,18 +343,8 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
             addCap(part, seenCulled == both ? nullptr : _capCullStates[0][ccw ? 1 : 0].get()); // keeps only them
         }
     }
-    e.zpass = volumeGeometry(vertices.get(), drawRange(e.volume, e.volume.sides).get(), box);
-    osg::ref_ptr<osg::Geode> failGeode = new osg::Geode, passGeode = new osg::Geode;
-    failGeode->addDrawable(e.zfail.get());
-    for (const osg::ref_ptr<osg::Geometry>& cap : e.lightCaps) failGeode->addDrawable(cap.get());
-    passGeode->addDrawable(e.zpass.get());
-    failGeode->setStateSet(_zfailState.get());
-    passGeode->setStateSet(_zpassState.get());
-    failGeode->setCullingActive(false);
-    passGeode->setCullingActive(false);
-    e.zSwitch->removeChildren(0, e.zSwitch->getNumChildren());
-    e.zSwitch->addChild(failGeode.get());
-    e.zSwitch->addChild(passGeode.get());
+    e.zpass = volumeGeometry(centred.get(), drawRange(e.volume, e.volume.sides).get(), centredBox);
+    assembleSwitch(e, origin);
     e.transform->setMatrix(e.caster.world);
 
     const osg::BoundingSphere local(box);
@@ -467,7 +525,8 @@ osg::ref_ptr<osg::StateSet> createVolumeStateSet(osg::Program* program)
     ss->setMode(GL_DEPTH_CLAMP, on);
     ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     ss->setMode(GL_STENCIL_TEST, on);
-    ss->setAttributeAndModes(new osg::PolygonOffset(0.0f, 1.0f), on);
+    // None on the sides and the dark cap (the light caps set their own, lightCapState()).
+    ss->setAttributeAndModes(new osg::PolygonOffset(0.0f, 0.0f), on);
     ss->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     return ss;
 }
