@@ -264,10 +264,13 @@ ShadowVolumeGroup::Entry ShadowVolumeGroup::createEntry() const
 
 void ShadowVolumeGroup::assembleSwitch(Entry& e, const osg::Vec3d& origin) const
 {
-    const auto centredAt = [&origin](osg::Drawable* drawable) {
+    // A transform only where the volume is drawn about a centre: the other casters' volumes
+    // keep one model-view matrix a draw, as before.
+    const auto centredAt = [&origin](osg::Drawable* drawable) -> osg::ref_ptr<osg::Node> {
         osg::ref_ptr<osg::Geode> geode = new osg::Geode;
         geode->addDrawable(drawable);
         geode->setCullingActive(false);
+        if (origin == osg::Vec3d()) return geode;
         osg::ref_ptr<osg::MatrixTransform> about = new osg::MatrixTransform(osg::Matrixd::translate(origin));
         about->setCullingActive(false);
         about->addChild(geode.get());
