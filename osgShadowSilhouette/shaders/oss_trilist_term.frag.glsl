@@ -500,13 +500,14 @@ float oss_listNearest(int s, uint word)
 }
 
 // Rays from..to-1 of n (first pass: `first` of them; oss_spiralIndex()) of slot s's soft term
-// (oss_listSoftTerm()) from `origin` (p: its light texture point, c0: its clip position): how
-// many reach the light; `cutOnly` set when one meets only alpha-tested triangles.
-int oss_castRays(int s, vec4 origin, vec4 p, vec4 c0, ivec4 range, vec2 jitter, inout bool cutOnly)
+// (oss_listSoftTerm()) from `origin` (p: its light texture point, c0: its clip position),
+// meeting triangles nearer than depths.x (the ray's own surface left out) down to depths.y
+// (the nearest listed): how many reach the light; `cutOnly` set when one meets only
+// alpha-tested triangles.
+int oss_castRays(int s, vec4 origin, vec4 p, vec4 c0, ivec4 range, vec2 depths, vec2 jitter, inout bool cutOnly)
 {
     int from = range.x, to = range.y, n = range.z, first = range.w;
-    float limit = p.z - oss_listMargin(s, origin); // the surface the ray leaves does not count
-    float qNear = oss_listNearest(s, to > from ? oss_listData(s, 3u) : 0u);
+    float limit = depths.x, qNear = depths.y;
     int lit = 0;
     for (int k = from; k < to; ++k)
     {
@@ -541,13 +542,16 @@ vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition, bool wa
     uint h = oss_hash(cellOf.x ^ oss_hash(cellOf.y ^ oss_hash(cellOf.z ^ uint(s))));
     vec2 jitter = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
     vec4 c0 = oss_eyeToShadow[s] * origin;
+    // Once per pixel for both passes: the margin (the surface the ray leaves does not count)
+    // and the nearest listed depth (header word 3).
+    vec2 depths = n > 0 ? vec2(p.z - oss_listMargin(s, origin), oss_listNearest(s, header.w)) : vec2(0.0);
     bool cutOnly = false;
     // The first pass, a quarter of the rays, one of each ring of four of the spiral (a
     // spiral of its own, nearly): when its rays all agree and so do those of the pixel's
     // neighbours in its 2 x 2 quad, the pixel takes their answer (inside an umbra, or a point
     // the map called shadowed that sees the whole light); else the other three quarters follow.
     int first = min(max(oss_listSoftSamples.y, 1), n);
-    int lit = oss_castRays(s, origin, p, c0, ivec4(0, first, n, first), jitter, cutOnly);
+    int lit = oss_castRays(s, origin, p, c0, ivec4(0, first, n, first), depths, jitter, cutOnly);
     float share = first > 0 ? float(lit) / float(first) : pcf;
 #ifdef GL_ARB_derivative_control
     bool quadAgrees = dFdxFine(share) == 0.0 && dFdyFine(share) == 0.0;
@@ -559,7 +563,7 @@ vec2 oss_listSoftTerm(int s, float pcf, bool penumbra, vec4 eyePosition, bool wa
 #ifdef OSS_COUNT_EXACT
     if (walk && end < n) atomicCounterIncrement(oss_stoppedEarly);
 #endif
-    lit += oss_castRays(s, origin, p, c0, ivec4(first, end, n, first), jitter, cutOnly);
+    lit += oss_castRays(s, origin, p, c0, ivec4(first, end, n, first), depths, jitter, cutOnly);
     float v = n > 0 ? float(lit) / float(end) : pcf;
     v = walk && (overflow || cutOnly) ? step(0.5, pcf) : v;
     return vec2(v, walk ? (v > 0.0 && v < 1.0 ? 2.0 : 1.0) : 0.0);
