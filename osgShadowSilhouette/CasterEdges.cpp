@@ -1,5 +1,7 @@
 #include <osgShadowSilhouette/CasterEdges>
 
+#include "CasterVertexStages.h"
+
 #include <osg/Camera>
 #include <osg/CullFace>
 #include <osg/Depth>
@@ -64,6 +66,22 @@ unsigned char culledWindings(const osg::NodePath& path, const osg::StateSet* own
     if (culled == osg::CullFace::FRONT_AND_BACK) return Caster::CULLS_CCW | Caster::CULLS_CW;
     const bool ccwIsFront = !front || front->getMode() != osg::FrontFace::CLOCKWISE;
     return (culled == osg::CullFace::FRONT) == ccwIsFront ? Caster::CULLS_CCW : Caster::CULLS_CW;
+}
+
+/** Whether the program that draws a geometry with the state sets of `path` (then `own`)
+ *  has a vertex stage of its own (CasterVertexStages::hasOwnVertexStage()). */
+bool drawnByOwnVertexStage(const osg::NodePath& path, const osg::StateSet* own)
+{
+    PathValue program;
+    const auto apply = [&](const osg::StateSet& ss) {
+        if (const osg::StateSet::RefAttributePair* p = ss.getAttributePair(osg::StateAttribute::PROGRAM))
+            program.push(p->first.get(), p->second);
+    };
+    for (const osg::Node* node : path)
+        if (node->getStateSet()) apply(*node->getStateSet());
+    if (own && (path.empty() || path.back()->getStateSet() != own)) apply(*own);
+    const auto* p = dynamic_cast<const osg::Program*>(program.attribute);
+    return p && detail::CasterVertexStages::hasOwnVertexStage(*p);
 }
 
 /** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
@@ -140,6 +158,7 @@ void CasterCollector::apply(osg::Geometry& geometry)
     if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
     caster.culledWindings = culledWindings(getNodePath(), geometry.getStateSet());
     if (cullsASeenSide(caster.culledWindings, caster.closed, caster.world)) caster.seeThrough = true;
+    caster.ownVertexStage = drawnByOwnVertexStage(getNodePath(), geometry.getStateSet());
     _casters.push_back(caster);
 }
 
@@ -189,6 +208,11 @@ bool CasterEdges::update(const std::vector<Caster>& casters, const osg::Vec4d& l
     for (std::size_t i = 0; i < casters.size(); ++i)
     {
         SilhouetteEdges& edges = _silhouettes[i];
+        if (casters[i].ownVertexStage)
+        {
+            edges = SilhouetteEdges(); // its vertex array is not where it is drawn
+            continue;
+        }
         _extractor.extract(casters[i].mesh->getAdjacency(), worldLight, casters[i].world, edges);
         for (const osg::Vec3f& p : edges.positions) _world.push_back(osg::Vec3d(p) * casters[i].world);
     }

@@ -153,6 +153,7 @@ bool cullDepthMap(ModeFrame& mf, ModePass& mode, LightPass& pass, const LightDes
     if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))
     {
         scene->setCasters(!reuse);
+        scene->setCasterStages(mf.settings.casterStages);
         scene->setExcluded(frame.nonFinite);
         scene->setBillboards(frame.billboards);
     }

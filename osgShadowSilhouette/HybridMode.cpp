@@ -119,6 +119,7 @@ void fitListPass(ModeFrame& mf, LightPass& pass, unsigned int slot)
                                          settings.tuning.listNodeReservePerTexel);
     auto* scene = new TraverseShadowedSceneCallback(settings.shadowedScene);
     scene->setListed(settings.listedDrawables);
+    scene->setCasterStages(settings.casterStages);
     pass.listPass->getCamera()->setCullCallback(scene);
     pass.listRendered = PassInputs();
 }
@@ -238,6 +239,8 @@ public:
         planListReads(mf);
         mf.stats.triangleLists = frame.triangleLists;
         mf.services.warnAlphaTested(true, frame.triangleLists);
+        if (!frame.triangleLists)
+            mf.services.warnOwnVertexStages(frame.casterList, WarningLog::CpuGeometry::StencilVolumes);
         frame.stencil = !frame.triangleLists;
         // Statistics of the lists: the fragments resolved exactly, counted in the eye pass.
         mf.eye.countExact = frame.triangleLists && mf.settings.recordingStats;

@@ -29,6 +29,8 @@ namespace detail {
  *  UseOverrideForShadowMapTexture is false (SilhouetteShadowTechnique::mapBinding()). */
 constexpr unsigned int EYE_PASS_BINDING = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
 
+class CasterVertexStages;
+
 /** What a mode's passes read of the technique in one cull: the properties in effect and
  *  the state init() built. The technique fills it; the passes never write it. */
 struct PassSettings
@@ -54,6 +56,7 @@ struct PassSettings
     osg::StateSet* listStateSet = nullptr;
     osg::StateSet* listFrontOnlyStateSet = nullptr;
     ListedDrawables* listedDrawables = nullptr;
+    CasterVertexStages* casterStages = nullptr; ///< the casters' own vertex stages in the light passes
     osg::Program* stencilProgram = nullptr;
     osg::Program* volumeProgram = nullptr;
     osg::Texture2D* defaultSilhouetteTexture = nullptr;    ///< an edge mask without edges
@@ -73,6 +76,9 @@ struct PassServices
     std::function<bool()> applicationPrograms;
     /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */
     std::function<void(bool hybrid, bool lists)> warnAlphaTested;
+    /** Names the casters with a vertex stage of their own that the CPU's geometry of a mode
+     *  leaves out (WarningLog::ownVertexStages()), once each. */
+    std::function<void(const std::vector<Caster>& casters, WarningLog::CpuGeometry mode)> warnOwnVertexStages;
 };
 
 /** One cull of one view, as a mode's passes see it. */

@@ -3,6 +3,8 @@
 #ifndef OSGSHADOWSILHOUETTE_RENDERLEAVES_H
 #define OSGSHADOWSILHOUETTE_RENDERLEAVES_H
 
+#include "CasterVertexStages.h"
+
 #include <osgShadowSilhouette/TriangleListPass>
 #include <osgShadowSilhouette/ViewPoint>
 
@@ -102,6 +104,8 @@ public:
         _marked = std::move(drawables);
         _markedStateSet = ss;
     }
+    /** The casters with a vertex stage of their own keep it (@p stages: the technique's). */
+    void setCasterStages(CasterVertexStages* stages) { _casterStages = stages; }
     /** The draws are those @p listed gives (the triangle lists: triangles only). */
     void setListed(ListedDrawables* listed) { _listed = listed; }
     /** The billboard drawables are drawn as the view turned them (FrameContext::billboards). */
@@ -113,6 +117,10 @@ public:
             _scene->osg::Group::traverse(*nv);
             osgUtil::CullVisitor* cv = nv->asCullVisitor();
             if (cv && !_excluded.empty() && cv->getCurrentRenderBin()) removeLeaves(*cv->getCurrentRenderBin(), _excluded);
+            const osg::StateSet* passState =
+                cv && cv->getCurrentCamera() ? cv->getCurrentCamera()->getStateSet() : nullptr;
+            if (_casterStages && passState && cv->getCurrentRenderBin())
+                _casterStages->apply(*cv->getCurrentRenderBin(), *passState);
             if (cv && !_marked.empty() && _markedStateSet && cv->getCurrentRenderBin())
                 moveLeaves(*cv->getCurrentRenderBin(), _marked, _markedStateSet.get());
             if (cv && _billboards && !_billboards->empty() && cv->getCurrentRenderBin() && cv->getCurrentCamera())
@@ -129,6 +137,7 @@ private:
     std::unordered_set<const osg::Drawable*> _marked;
     osg::ref_ptr<osg::StateSet> _markedStateSet;
     osg::ref_ptr<ListedDrawables> _listed;
+    osg::ref_ptr<CasterVertexStages> _casterStages;
     std::shared_ptr<const BillboardMatrices> _billboards;
 };
 

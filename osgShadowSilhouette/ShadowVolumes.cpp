@@ -295,7 +295,13 @@ void ShadowVolumeGroup::assembleSwitch(Entry& e, const osg::Vec3d& origin) const
 void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
 {
     const MeshAdjacency& mesh = e.caster.mesh->getAdjacency();
-    _extractor.buildVolume(mesh, HomogeneousLight{light}, e.caster.world, e.silhouette, e.volume);
+    if (e.caster.ownVertexStage) // its vertex array is not where it is drawn: no volume (the technique warns)
+    {
+        e.silhouette = SilhouetteEdges();
+        e.volume = ShadowVolume();
+    }
+    else
+        _extractor.buildVolume(mesh, HomogeneousLight{light}, e.caster.world, e.silhouette, e.volume);
 
     // The light cap lies on the caster's faces and is drawn in the caster's frame, as the eye
     // pass draws them, so that it rounds as they do. When that frame's origin lies far off

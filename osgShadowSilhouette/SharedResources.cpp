@@ -67,6 +67,7 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
     r->listStateSet = TriangleListPass::createSharedStateSet();
     r->listFrontOnlyStateSet = new osg::StateSet;
     r->listFrontOnlyStateSet->addUniform(new osg::Uniform(shader::LIST_FRONT_ONLY, true));
+    r->casterStages = new CasterVertexStages(watchLink);
     r->litDepthTexture = createLitTexture();
     r->litRawDepthTexture = SilhouetteMapPass::createLitDepthTexture();
     r->defaultSilhouetteTexture = SilhouetteMapPass::createDefaultTexture();

@@ -2,6 +2,8 @@
 #ifndef OSGSHADOWSILHOUETTE_SHARED_RESOURCES_H
 #define OSGSHADOWSILHOUETTE_SHARED_RESOURCES_H
 
+#include "CasterVertexStages.h"
+
 #include <osg/Program>
 #include <osg/Referenced>
 #include <osg/StateSet>
@@ -32,6 +34,8 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Texture2D> defaultNeighbourhoodTexture; ///< a neighbourhood map without edges
     osg::ref_ptr<osg::StateSet> distanceMapStateSet;          ///< FILTER_SILHOUETTE's distance maps
     osg::ref_ptr<osg::Texture2D> defaultDistanceTexture;      ///< a distance map without edges
+    /** The casters' own vertex stages in the light passes (a cache, itself thread safe). */
+    osg::ref_ptr<CasterVertexStages> casterStages;
 
     /** The depth texture of a slot with nothing to shadow. */
     osg::Texture2D* litTexture(bool rawDepth) const
@@ -56,6 +60,7 @@ struct SharedResources : public osg::Referenced
         for (osg::Texture2D* texture : {litDepthTexture.get(), litRawDepthTexture.get(), defaultSilhouetteTexture.get(),
                                         defaultNeighbourhoodTexture.get(), defaultDistanceTexture.get()})
             op(texture);
+        op(casterStages.get());
     }
 };
 

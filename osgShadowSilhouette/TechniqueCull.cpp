@@ -112,6 +112,7 @@ PassSettings TechniqueCull::passSettings() const
     s.listStateSet = shared.listStateSet.get();
     s.listFrontOnlyStateSet = shared.listFrontOnlyStateSet.get();
     s.listedDrawables = _t._listedDrawables.get();
+    s.casterStages = shared.casterStages.get();
     s.stencilProgram = shared.stencilProgram.get();
     s.volumeProgram = shared.volumeProgram.get();
     s.defaultSilhouetteTexture = shared.defaultSilhouetteTexture.get();
@@ -128,6 +129,10 @@ PassServices TechniqueCull::passServices()
     services.cullReceivers = [this](osg::StateSet* pass) { _t.cullReceivers(_cv, _vd, pass); };
     services.applicationPrograms = [this]() { return _t.hasApplicationPrograms(); };
     services.warnAlphaTested = [log = _t._warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
+    services.warnOwnVertexStages = [log = _t._warnings.get()](const std::vector<Caster>& casters,
+                                                              WarningLog::CpuGeometry mode) {
+        log->ownVertexStages(casters, mode);
+    };
     return services;
 }
 

@@ -456,6 +456,15 @@ struct TriangleIndexSink
     }
 };
 
+/** The vertex attribute arrays of @p geometry (a skinning program's bone weights, set after
+ *  its first frames). */
+std::vector<const osg::Array*> attributeArrays(const osg::Geometry& geometry)
+{
+    std::vector<const osg::Array*> arrays;
+    for (const osg::ref_ptr<osg::Array>& array : geometry.getVertexAttribArrayList()) arrays.push_back(array.get());
+    return arrays;
+}
+
 } // namespace
 
 bool ListedDrawables::isTriangleMode(GLenum mode)
@@ -499,7 +508,7 @@ bool ListedDrawables::isCurrent(const StandIn& standIn, const osg::Geometry& sou
 {
     const osg::Geometry::PrimitiveSetList& sets = source.getPrimitiveSetList();
     if (standIn.source.get() != &source || standIn.vertices != source.getVertexArray() ||
-        standIn.primitives.size() != sets.size())
+        standIn.primitives.size() != sets.size() || standIn.attributes != attributeArrays(source))
         return false;
     for (std::size_t i = 0; i < sets.size(); ++i)
         if (standIn.primitives[i].first != sets[i].get() ||
@@ -513,6 +522,7 @@ ListedDrawables::StandIn ListedDrawables::makeStandIn(osg::Geometry& source)
     StandIn standIn;
     standIn.source = &source;
     standIn.vertices = source.getVertexArray();
+    standIn.attributes = attributeArrays(source);
     osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
     geometry->setName(source.getName() + " (list pass triangles)");
     geometry->setUseDisplayList(false);
@@ -520,6 +530,12 @@ ListedDrawables::StandIn ListedDrawables::makeStandIn(osg::Geometry& source)
     // array and primitive sets, which it draws without.
     geometry->setUseVertexBufferObjects(source.getUseVertexBufferObjects());
     geometry->setVertexArray(source.getVertexArray());
+    // The rest of the arrays too, for a vertex stage of the caster's own (a skinning
+    // shader's bone weights: CasterVertexStages.h); shared, not copied.
+    geometry->setNormalArray(source.getNormalArray());
+    geometry->setColorArray(source.getColorArray());
+    geometry->setTexCoordArrayList(source.getTexCoordArrayList());
+    geometry->setVertexAttribArrayList(source.getVertexAttribArrayList());
     osg::ref_ptr<osg::DrawElementsUInt> faces = new osg::DrawElementsUInt(GL_TRIANGLES);
     osg::TriangleIndexFunctor<TriangleIndexSink> split;
     split.out = faces.get();

@@ -116,5 +116,33 @@ void WarningLog::alphaTested(bool hybrid, bool lists)
              << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
+void WarningLog::ownVertexStages(const std::vector<Caster>& casters, CpuGeometry mode)
+{
+    Lock lock(_mutex);
+    std::vector<std::string> names;
+    std::size_t count = 0, unnamed = 0;
+    for (const Caster& caster : casters)
+    {
+        if (!caster.ownVertexStage || !_ownVertexStagesNamed.insert({mode, caster.geometry.get()}).second) continue;
+        ++count;
+        if (caster.geometry->getName().empty())
+            ++unnamed;
+        else
+            names.push_back("'" + caster.geometry->getName() + "'");
+    }
+    if (count == 0) return;
+    const char* modeName = mode == CpuGeometry::SilhouetteEdges ? "SILHOUETTE_MAP"
+                           : mode == CpuGeometry::Volumes       ? "SHADOW_VOLUME"
+                                                                : "HYBRID (stencil volumes)";
+    OSG_WARN << "osgShadowSilhouette: " << modeName << ": " << count << (count == 1 ? " caster is" : " casters are")
+             << " drawn by a program with a vertex stage of its own: " << listOf(names, unnamed)
+             << "; the CPU cannot know where that stage puts its triangles, so "
+             << (mode == CpuGeometry::Volumes ? "it casts no shadow volume and no shadow"
+                 : mode == CpuGeometry::StencilVolumes
+                     ? "it casts no stencil volume, and the exact test calls the pixels along its shadows' edges lit"
+                     : "it gives the silhouette map no edges: its shadows' edges are the depth map's")
+             << " (SHADOW_MAP, and HYBRID with triangle lists, run that vertex stage and cast its shape)" << std::endl;
+}
+
 } // namespace detail
 } // namespace osgShadowSilhouette

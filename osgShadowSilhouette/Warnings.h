@@ -3,6 +3,8 @@
 #ifndef OSGSHADOWSILHOUETTE_WARNINGS_H
 #define OSGSHADOWSILHOUETTE_WARNINGS_H
 
+#include <osgShadowSilhouette/CasterEdges>
+
 #include <osg/Drawable>
 #include <osg/Light>
 #include <osg/Node>
@@ -67,6 +69,17 @@ public:
      *  naming the alpha-tested drawables not yet named in it: the exact tests take their
      *  triangles whole. */
     void alphaTested(bool hybrid, bool lists);
+    /** What the CPU's geometry of a mode does without the casters drawn by a vertex stage of
+     *  their own (Caster::ownVertexStage). */
+    enum class CpuGeometry
+    {
+        Volumes,        ///< SHADOW_VOLUME: they cast no shadow
+        StencilVolumes, ///< HYBRID's stencil method: the pixels along their shadows' edges lit
+        SilhouetteEdges ///< SILHOUETTE_MAP: the depth map's answer at their edges
+    };
+    /** One message per mode naming the casters of @p casters with a vertex stage of their
+     *  own that are not yet named in it. */
+    void ownVertexStages(const std::vector<Caster>& casters, CpuGeometry mode);
 
 private:
     OpenThreads::Mutex _mutex;
@@ -76,6 +89,7 @@ private:
     std::vector<osg::observer_ptr<osg::Drawable>> _alphaTested;
     std::set<std::pair<int, const osg::Drawable*>>
         _alphaTestedNamed; ///< (0 volumes, 1 HYBRID stencil, 2 lists; drawable)
+    std::set<std::pair<CpuGeometry, const osg::Drawable*>> _ownVertexStagesNamed;
 };
 
 } // namespace detail

@@ -43,8 +43,6 @@ uniform bool oss_listFrontOnly;   // a closed caster: counter-clockwise triangle
 uniform vec3 oss_listReceivers[8];   // the corners of the receivers' world box, in the light's view space
 uniform float oss_listReceiverSlack; // how far beyond a triangle's plane a corner still counts as on it
 
-in vec4 oss_lightViewPosition[];
-
 flat out uint oss_triangle;
 flat out vec2 oss_v0, oss_v1, oss_v2; // texture space
 
@@ -133,7 +131,11 @@ vec4 oss_nearCut(vec4 a, vec4 b, float da, float db)
 
 void main()
 {
-    vec4 p0 = oss_lightViewPosition[0], p1 = oss_lightViewPosition[1], p2 = oss_lightViewPosition[2];
+    // The light's view space, from clip space: the vertex stage may be a caster's own
+    // (CasterVertexStages.h), which owes the passes gl_Position alone.
+    vec4 p0 = gl_ProjectionMatrixInverse * gl_in[0].gl_Position;
+    vec4 p1 = gl_ProjectionMatrixInverse * gl_in[1].gl_Position;
+    vec4 p2 = gl_ProjectionMatrixInverse * gl_in[2].gl_Position;
     if (p0.w > 0.0 && p1.w > 0.0 && p2.w > 0.0 &&
         !oss_canShadowReceivers(p0.xyz / p0.w, p1.xyz / p1.w, p2.xyz / p2.w))
         return; // no receiver behind it

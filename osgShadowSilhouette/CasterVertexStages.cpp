@@ -1,0 +1,143 @@
+#include "CasterVertexStages.h"
+
+#include <osgShadowSilhouette/ShaderConstants>
+
+#include <algorithm>
+
+namespace osgShadowSilhouette {
+namespace detail {
+
+const osg::Program* CasterVertexStages::casterProgram(const osgUtil::StateGraph& graph, const osg::StateSet& passState)
+{
+    // The path from the leaves up to the pass camera's state set, then applied top down.
+    std::vector<const osg::StateSet*> path;
+    const osgUtil::StateGraph* sg = &graph;
+    for (; sg && sg->getStateSet() != &passState; sg = sg->_parent)
+        if (sg->getStateSet()) path.push_back(sg->getStateSet());
+    if (!sg) return nullptr; // not drawn under the pass's state: not a caster of it
+    const osg::Program* program = nullptr;
+    bool overridden = false;
+    for (auto it = path.rbegin(); it != path.rend(); ++it)
+    {
+        const osg::StateSet::RefAttributePair* pair = (*it)->getAttributePair(osg::StateAttribute::PROGRAM);
+        if (!pair || (overridden && !(pair->second & osg::StateAttribute::PROTECTED))) continue;
+        program = dynamic_cast<const osg::Program*>(pair->first.get());
+        overridden = (pair->second & osg::StateAttribute::OVERRIDE) != 0;
+    }
+    return program && hasOwnVertexStage(*program) ? program : nullptr;
+}
+
+bool CasterVertexStages::hasOwnVertexStage(const osg::Program& program)
+{
+    bool vertex = false;
+    for (unsigned int i = 0; i < program.getNumShaders(); ++i)
+    {
+        const osg::Shader* shader = program.getShader(i);
+        if (!shader) continue;
+        const osg::Shader::Type type = shader->getType();
+        if (type == osg::Shader::GEOMETRY || type == osg::Shader::TESSCONTROL || type == osg::Shader::TESSEVALUATION)
+            return false;
+        vertex = vertex || type == osg::Shader::VERTEX;
+    }
+    return vertex;
+}
+
+std::size_t CasterVertexStages::apply(osgUtil::RenderBin& bin, const osg::StateSet& passState)
+{
+    const auto* passProgram = dynamic_cast<const osg::Program*>(passState.getAttribute(osg::StateAttribute::PROGRAM));
+    if (!passProgram) return 0;
+    std::size_t moved = 0;
+    const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
+    for (osgUtil::StateGraph* graph : graphs)
+    {
+        if (graph->_leaves.empty()) continue;
+        const osg::Program* caster = casterProgram(*graph, passState);
+        if (!caster) continue;
+        osg::StateSet* ss = nullptr;
+        {
+            OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+            ss = joined(*caster, *passProgram);
+        }
+        osgUtil::StateGraph* child = graph->find_or_insert(ss);
+        if (child->_leaves.empty()) bin.addStateGraph(child); // state graphs outlive frames, their leaves do not
+        for (const osg::ref_ptr<osgUtil::RenderLeaf>& leaf : graph->_leaves) child->addLeaf(leaf.get());
+        moved += graph->_leaves.size();
+        graph->_leaves.clear();
+    }
+    // The emptied graphs go: a bin holds no empty state graph otherwise (eraseLeaves()).
+    auto& list = bin.getStateGraphList();
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [](const osgUtil::StateGraph* g) { return g->_leaves.empty(); }),
+        list.end());
+    for (auto& nested : bin.getRenderBinList()) moved += apply(*nested.second, passState);
+    return moved;
+}
+
+std::vector<const osg::Shader*> CasterVertexStages::joinedShaders(const osg::Program& caster, const osg::Program& pass)
+{
+    std::vector<const osg::Shader*> shaders;
+    for (unsigned int i = 0; i < caster.getNumShaders(); ++i)
+        if (caster.getShader(i) && caster.getShader(i)->getType() == osg::Shader::VERTEX)
+            shaders.push_back(caster.getShader(i));
+    for (unsigned int i = 0; i < pass.getNumShaders(); ++i)
+        if (pass.getShader(i) && pass.getShader(i)->getType() != osg::Shader::VERTEX)
+            shaders.push_back(pass.getShader(i));
+    return shaders;
+}
+
+osg::StateSet* CasterVertexStages::joined(const osg::Program& caster, const osg::Program& pass)
+{
+    // A skinning program gains its shader and bindings after its first frames
+    // (RigTransformHardware::init()): the joined program follows what the caster's holds now.
+    std::vector<const osg::Shader*> shaders = joinedShaders(caster, pass);
+    Joined& entry = _joined[{&caster, &pass}];
+    if (entry.stateSet && entry.caster.get() == &caster && entry.pass.get() == &pass && entry.shaders == shaders &&
+        entry.bindings == caster.getAttribBindingList())
+        return entry.stateSet.get();
+    prune();
+    Joined& fresh = _joined[{&caster, &pass}];
+    fresh.caster = &caster;
+    fresh.pass = &pass;
+    fresh.shaders = shaders;
+    fresh.bindings = caster.getAttribBindingList();
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName((caster.getName().empty() ? std::string("a caster's program") : "'" + caster.getName() + "'") +
+                     "'s vertex stage in " + pass.getName());
+    for (const osg::Shader* shader : shaders) program->addShader(const_cast<osg::Shader*>(shader));
+    for (const auto& binding : fresh.bindings) program->addBindAttribLocation(binding.first, binding.second);
+    const auto protectedOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE | osg::StateAttribute::PROTECTED;
+    fresh.stateSet = new osg::StateSet;
+    fresh.stateSet->setAttributeAndModes(program.get(), protectedOn);
+    fresh.stateSet->setDefine(shader::DEFINE_CASTER_VERTEX_STAGE, protectedOn);
+    if (_watchLink) _watchLink(program.get());
+    return fresh.stateSet.get();
+}
+
+void CasterVertexStages::prune()
+{
+    for (auto it = _joined.begin(); it != _joined.end();)
+        it = it->second.caster.valid() && it->second.pass.valid() ? std::next(it) : _joined.erase(it);
+}
+
+std::size_t CasterVertexStages::size() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    return _joined.size();
+}
+
+void CasterVertexStages::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (auto& entry : _joined)
+        if (entry.second.stateSet) entry.second.stateSet->resizeGLObjectBuffers(maxSize);
+}
+
+void CasterVertexStages::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (const auto& entry : _joined)
+        if (entry.second.stateSet) entry.second.stateSet->releaseGLObjects(state);
+}
+
+} // namespace detail
+} // namespace osgShadowSilhouette
