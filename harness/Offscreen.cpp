@@ -158,19 +158,27 @@ FrameTiming Renderer::timeFrames(int warmup, int frames)
 
 FrameTiming Renderer::timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame)
 {
+    return timeFrames(warmup, frames, beforeFrame, [](int) {});
+}
+
+FrameTiming Renderer::timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame,
+                                 const std::function<void(int)>& afterFrame)
+{
     for (int i = 0; i < warmup; ++i)
     {
         beforeFrame(i);
-        _viewer->frame();
+        frame();
+        afterFrame(i);
     }
     std::vector<double> cpu, gpu;
     for (int i = 0; i < frames; ++i)
     {
         beforeFrame(warmup + i);
         const osg::Timer_t t0 = osg::Timer::instance()->tick();
-        _viewer->frame();
+        frame();
         cpu.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
         if (_hooks->lastGpuMs >= 0.0) gpu.push_back(_hooks->lastGpuMs);
+        afterFrame(warmup + i);
     }
     FrameTiming t;
     t.frames = frames;
@@ -185,11 +193,16 @@ osg::ref_ptr<osg::Image> Renderer::renderAndCapture(const osg::Vec4& clearColor)
     const osg::Vec4 previous = camera->getClearColor();
     camera->setClearColor(clearColor);
     _hooks->capture = new osg::Image;
-    _viewer->frame();
+    frame();
     osg::ref_ptr<osg::Image> image = _hooks->capture;
     _hooks->capture = nullptr;
     camera->setClearColor(previous);
     return image;
+}
+
+void Renderer::frame()
+{
+    _viewer->frame(_simulationTime >= 0.0 ? _simulationTime : USE_REFERENCE_TIME);
 }
 
 } // namespace osshar

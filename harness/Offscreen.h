@@ -40,6 +40,16 @@ public:
     FrameTiming timeFrames(int warmup, int frames);
     /** The same, calling beforeFrame(i) before frame i (warm-up frames first, from 0). */
     FrameTiming timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame);
+    /** The same, also calling afterFrame(i) after frame i, outside its timing. */
+    FrameTiming timeFrames(int warmup, int frames, const std::function<void(int)>& beforeFrame,
+                           const std::function<void(int)>& afterFrame);
+
+    /** The frames from now on, renderAndCapture()'s included, show simulation time t (the
+     *  update traversal's, which animations follow: osgViewer's frame(t)), so that a frame
+     *  can be rendered again as it was; negative: the wall clock, as osgViewer's frame()
+     *  (the default). */
+    void setSimulationTime(double t) { _simulationTime = t; }
+    double simulationTime() const { return _simulationTime; }
 
     /** Renders one frame with the given clear colour and returns its RGB pixels (bottom row first). */
     osg::ref_ptr<osg::Image> renderAndCapture(const osg::Vec4& clearColor = osg::Vec4(0.2f, 0.2f, 0.3f, 1.0f));
@@ -52,7 +62,10 @@ public:
 
 private:
     struct DrawHooks;
+    void frame();
+
     int _width, _height;
+    double _simulationTime = -1.0;
     osg::ref_ptr<osgViewer::Viewer> _viewer;
     osg::ref_ptr<DrawHooks> _hooks;
 };

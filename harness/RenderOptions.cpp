@@ -263,6 +263,13 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     if (a.read("--ground")) o.ground = true;
     if (a.read("--check-gl-errors")) o.checkGLErrors = true;
     if (a.read("--moving-light")) o.movingLight = true;
+    if (a.read("--animate")) o.animate = true;
+    if (a.read("--score-every-frame")) o.scoreEveryFrame = true;
+    if (a.read("--time-step", o.timeStep) && !(o.timeStep > 0.0 && std::isfinite(o.timeStep)))
+    {
+        error = "--time-step takes a finite number of seconds above 0";
+        return false;
+    }
     if (o.frames < 1 || o.warmup < 0)
     {
         error = "--frames needs at least 1 and --warmup at least 0";
@@ -295,7 +302,7 @@ std::string renderOptionsUsage(const std::string& program)
         s << " [" << option << " "
           << osgShadowSilhouette::propertyValueSyntax(*osgShadowSilhouette::findProperty(property)) << "]";
     s << "\n"
-      << "    [--moving-light] [--ground] [--check-gl-errors]\n";
+      << "    [--moving-light] [--animate] [--time-step S] [--score-every-frame] [--ground] [--check-gl-errors]\n";
     return s.str();
 }
 

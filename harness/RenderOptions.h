@@ -25,6 +25,22 @@ struct LightArg
     double spotCutoff = 180.0;                ///< --spot-cutoff: half angle in degrees; 180: a point light
 
     bool spot() const { return !directional && spotCutoff <= 90.0; }
+
+    /** --light-dir: a directional light toward `towardLight`. */
+    static LightArg toward(const osg::Vec3d& towardLight)
+    {
+        LightArg light;
+        light.vector = towardLight;
+        return light;
+    }
+    /** --light-pos: a point light at `position`. */
+    static LightArg at(const osg::Vec3d& position)
+    {
+        LightArg light;
+        light.directional = false;
+        light.vector = position;
+        return light;
+    }
 };
 
 struct RenderOptions
@@ -68,6 +84,14 @@ struct RenderOptions
      *  shorthands of propertyOptions() (--max-shadow-lights N, --hybrid-method lists, ...). */
     std::vector<std::pair<std::string, double>> properties;
     bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)
+    /** --animate: plays every animation of the scene's osgAnimation::BasicAnimationManagers,
+     *  looping (playAnimations()), and renders frame k (warm-up frames first, from 0) at
+     *  simulation time k * timeStep; the frames after them (masks, images) show the last. */
+    bool animate = false;
+    double timeStep = 1.0 / 30.0; ///< --time-step S: seconds of simulation time per frame under --animate
+    /** --score-every-frame: after each timed frame, each light's mask of that frame (rendered
+     *  again at its simulation time) scored against its own exact reference. */
+    bool scoreEveryFrame = false;
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };

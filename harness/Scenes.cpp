@@ -1,4 +1,5 @@
 #include "Scenes.h"
+#include "AnimatedScenes.h"
 #include "Meshes.h"
 
 #include <osg/AlphaFunc>
@@ -19,8 +20,6 @@
 
 namespace osshar {
 
-namespace {
-
 osg::ref_ptr<osg::Geode> coloured(osg::ref_ptr<osg::Geometry> g, const osg::Vec4& colour)
 {
     osg::ref_ptr<osg::Material> m = new osg::Material;
@@ -35,7 +34,15 @@ osg::ref_ptr<osg::Geode> coloured(osg::ref_ptr<osg::Geometry> g, const osg::Vec4
     return geode;
 }
 
-const osg::Vec4 GROUND(0.75f, 0.75f, 0.72f, 1.0f);
+const osg::Vec4& groundColour()
+{
+    static const osg::Vec4 colour(0.75f, 0.75f, 0.72f, 1.0f);
+    return colour;
+}
+
+namespace {
+
+const osg::Vec4 GROUND = groundColour();
 
 Scene defaultScene()
 {
@@ -438,7 +445,8 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles", "cubes", "tree", "bunny", "dueling", "grazing", "elephant", "ring", "foliage"};
+    return {"default", "spheres", "poles",    "cubes", "tree",    "bunny",
+            "dueling", "grazing", "elephant", "ring",  "foliage", "animated"};
 }
 
 Scene createScene(const std::string& name)
@@ -454,6 +462,7 @@ Scene createScene(const std::string& name)
     if (name == "elephant") return elephantScene();
     if (name == "ring") return ringScene();
     if (name == "foliage") return foliageScene();
+    if (name == "animated") return animatedScene();
     return Scene{name, nullptr, {}};
 }
 

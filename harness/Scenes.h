@@ -2,6 +2,8 @@
 #ifndef OSS_HARNESS_SCENES_H
 #define OSS_HARNESS_SCENES_H
 
+#include <osg/Geode>
+#include <osg/Geometry>
 #include <osg/Group>
 #include <osg/LightSource>
 
@@ -32,12 +34,21 @@ struct Scene
  *  "elephant" (libcgal-demo's elephant subdivided to 355,712 triangles on a ground plane),
  *  "ring" (a point light amid its casters: eight pillars around it), "foliage" (alpha-tested
  *  casters: a fence panel with diamond holes and crossed cards of leaves, cut out by their
- *  textures' alpha and an osg::AlphaFunc). */
+ *  textures' alpha and an osg::AlphaFunc), "animated" (casters deformed every frame: a
+ *  skinned osgAnimation::RigGeometry, an osgAnimation::MorphGeometry and a geometry whose
+ *  vertex array an update callback edits; AnimatedScenes.h). */
 std::vector<std::string> sceneNames();
 
 /** A built-in scene by name; root is null for an unknown name, and for "bunny" when its
  *  file is missing, and for "elephant" when elephant.off is (with a message on stderr). */
 Scene createScene(const std::string& name);
+
+/** A Geode holding `g` under an osg::Material of `colour` (ambient and diffuse; specular 0.3,
+ *  shininess 32), as the built-in scenes colour their objects. */
+osg::ref_ptr<osg::Geode> coloured(osg::ref_ptr<osg::Geometry> g, const osg::Vec4& colour);
+
+/** The built-in scenes' ground colour. */
+const osg::Vec4& groundColour();
 
 /** A LightSource holding GL light `lightNum`: directional toward `towardLight` (w = 0) or at a
  *  position (w = 1), ambient 0.2, diffuse 0.8, specular 0.3. */

@@ -11,10 +11,15 @@
  * shadowed over unshadowed luminance); --compare-visibility reads that exact visibility from an
  * earlier --reference-visibility run instead of casting it again.
  *
+ * --animate plays the scene's osgAnimation animations at a fixed step of simulation time per
+ * frame (--time-step, default 1/30 s); --score-every-frame scores each timed frame's mask
+ * against that frame's own reference and prints frame_wrong_pct_max=... per light.
+ *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
  * MEASURE.md (harness/Peers.h); its mask (first light only) is classified from its image. */
 
+#include "AnimatedScenes.h"
 #include "Classes.h"
 #include "GLErrors.h"
 #include "Offscreen.h"
@@ -166,6 +171,51 @@ int writeVisibility(const osshar::RenderOptions& options, const osshar::Prepared
     return status;
 }
 
+/** --score-every-frame: per light, the wrong_pct of each timed frame's mask. */
+struct FrameScores
+{
+    std::vector<std::vector<double>> wrongPct; ///< [light][timed frame]
+    int failures = 0;                          ///< masks that could not be compared
+};
+
+/** Scores the frame just rendered: each light's mask, rendered again at the same simulation
+ *  time, against the exact reference of the scene as that frame left it. */
+void scoreFrame(const osshar::PreparedScene& scene, const ossref::Camera& camera, osshar::Renderer& renderer,
+                SilhouetteShadowTechnique& technique, int frame, FrameScores& scores)
+{
+    scores.wrongPct.resize(scene.lights.size());
+    for (unsigned int i = 0; i < scene.lights.size(); ++i)
+    {
+        const ossref::Mask mask = renderMask(renderer, technique, i);
+        const ossref::Mask reference =
+            ossref::computeReferenceMask(*scene.content, camera, osshar::referenceLight(scene.lights[i]),
+                                         scene.castsMask, scene.referenceTraversalMask());
+        const ossref::Comparison c = ossref::compareMasks(mask, reference);
+        if (!c.valid)
+        {
+            std::cerr << "osgsilhouetteshadow: frame " << frame << ": cannot compare: " << c.error << "\n";
+            ++scores.failures;
+            continue;
+        }
+        std::printf("frame=%d time=%.4f light=%u geometry_pixels=%lld wrong_pixels=%lld wrong_pct=%.4f\n", frame,
+                    renderer.simulationTime(), i, c.geometryPixels, c.wrongPixels, c.wrongPct);
+        scores.wrongPct[i].push_back(c.wrongPct);
+    }
+}
+
+void printFrameScores(const FrameScores& scores)
+{
+    for (std::size_t i = 0; i < scores.wrongPct.size(); ++i)
+    {
+        const std::vector<double>& w = scores.wrongPct[i];
+        if (w.empty()) continue;
+        double sum = 0.0;
+        for (double x : w) sum += x;
+        std::printf("light=%zu frames_scored=%zu frame_wrong_pct_max=%.4f frame_wrong_pct_mean=%.4f\n", i, w.size(),
+                    *std::max_element(w.begin(), w.end()), sum / double(w.size()));
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -222,12 +272,29 @@ int main(int argc, char** argv)
     // no light-space pass can be reused (the cost of a frame in which the light moves).
     osg::Light* moving = options.movingLight && !scene.lights.empty() ? scene.lights[0].source->getLight() : nullptr;
     const osg::Vec4 rest = moving ? moving->getPosition() : osg::Vec4();
-    const osshar::FrameTiming timing = renderer.timeFrames(options.warmup, options.frames, [&](int frame) {
+    if (options.animate)
+    {
+        unsigned int others = 0;
+        std::printf("animations_playing=%u\n", osshar::playAnimations(root.get(), &others));
+        if (others)
+            std::cerr << "osgsilhouetteshadow: --animate plays BasicAnimationManagers only; " << others
+                      << " other animation managers left as they are\n";
+    }
+    const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+    FrameScores frameScores;
+    const auto beforeFrame = [&](int frame) {
+        if (options.animate) renderer.setSimulationTime(frame * options.timeStep);
         if (!moving) return;
         const double angle = osg::DegreesToRadians(frame % 2 ? 0.1 : -0.1);
         moving->setPosition(rest * osg::Matrix::rotate(angle, osg::Vec3(0.0f, 0.0f, 1.0f)));
-    });
-    int status = 0;
+    };
+    const auto afterFrame = [&](int frame) {
+        if (options.scoreEveryFrame && technique && frame >= options.warmup)
+            scoreFrame(scene, refCamera, renderer, *technique, frame, frameScores);
+    };
+    const osshar::FrameTiming timing = renderer.timeFrames(options.warmup, options.frames, beforeFrame, afterFrame);
+    int status = frameScores.failures ? 1 : 0;
+    printFrameScores(frameScores);
     std::printf("frame_ms_median=%.3f\n", timing.cpuMsMedian);
     if (timing.gpuMsMedian >= 0.0) std::printf("gpu_ms_median=%.3f\n", timing.gpuMsMedian);
     if (technique)
@@ -280,7 +347,6 @@ int main(int argc, char** argv)
         osg::ref_ptr<osg::Image> color = renderer.renderAndCapture();
         if (!osgDB::writeImageFile(*color, options.out)) std::cerr << "cannot write " << options.out << "\n";
     }
-    const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
     const bool peer = osshar::isPeerMode(options.mode);
     const unsigned int maskLights = peer ? std::min<unsigned int>(1, scene.lights.size()) : scene.lights.size();
     for (unsigned int i = 0; i < maskLights; ++i)

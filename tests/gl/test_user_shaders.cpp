@@ -221,11 +221,8 @@ TEST(UserShaderModes, StencilModesKeepEachLightsAnswer)
 {
     osshar::RenderOptions options;
     options.scene = "default";
-    osshar::LightArg sun, point;
-    sun.vector = osg::Vec3d(0.45, -0.35, 0.82);
-    point.directional = false;
-    point.vector = osg::Vec3d(-6.0, -2.6, 10.0);
-    options.lights = {sun, point};
+    options.lights = {osshar::LightArg::toward(osg::Vec3d(0.45, -0.35, 0.82)),
+                      osshar::LightArg::at(osg::Vec3d(-6.0, -2.6, 10.0))};
     for (const char* mode : {"volume", "hybrid"})
     {
         ShadowedRender r(options, mode, 1024, 512, 384);
