@@ -1,13 +1,17 @@
 #include "AnimatedScenes.h"
 #include "Meshes.h"
 
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+
 #include <osg/MatrixTransform>
+#include <osg/ValueObject>
 #include <osg/NodeVisitor>
 #include <osgAnimation/BasicAnimationManager>
 #include <osgAnimation/Bone>
 #include <osgAnimation/Channel>
 #include <osgAnimation/MorphGeometry>
 #include <osgAnimation/RigGeometry>
+#include <osgAnimation/RigTransformHardware>
 #include <osgAnimation/Skeleton>
 #include <osgAnimation/StackedRotateAxisElement>
 #include <osgAnimation/StackedTranslateElement>
@@ -93,6 +97,24 @@ osg::ref_ptr<osgAnimation::FloatLinearChannel> floatChannel(const std::string& n
     for (const auto& [time, value] : keys) container->push_back(osgAnimation::FloatKeyframe(time, value));
     return channel;
 }
+
+/** RigTransformHardware's vertex stage: MAX_MATRIX is replaced by the palette's size;
+ *  boneWeight0 holds (palette index, weight) of up to two bones. Lit per vertex by GL light
+ *  0 for the picture (the program has no fragment stage: fixed-function colour). */
+const char* const SKINNING_VERTEX = R"(#version 400 compatibility
+uniform mat4 matrixPalette[MAX_MATRIX];
+in vec4 boneWeight0;
+void main()
+{
+    mat4 skin = boneWeight0.y * matrixPalette[int(boneWeight0.x)] + boneWeight0.w * matrixPalette[int(boneWeight0.z)];
+    vec4 position = skin * gl_Vertex;
+    gl_Position = gl_ModelViewProjectionMatrix * position;
+    vec3 n = normalize(gl_NormalMatrix * mat3(skin) * gl_Normal);
+    vec4 l = gl_LightSource[0].position;
+    vec3 toLight = normalize(l.w == 0.0 ? l.xyz : l.xyz - (gl_ModelViewMatrix * position).xyz);
+    gl_FrontColor = vec4(gl_Color.rgb * (0.3 + 0.7 * max(dot(n, toLight), 0.0)), gl_Color.a);
+}
+)";
 
 /** The skeleton (three bones up the z axis, bone i bending about `axes[i]`) with the
  *  skinned tube; the bones' channels are added to `animation`. */
@@ -195,6 +217,80 @@ public:
     }
 };
 
+/** sheetWave() in the sheet's vertex stage, at the uniform time the update callback sets;
+ *  the vertex array holds the flat sheet. */
+const char* const WAVE_VERTEX = R"(#version 400 compatibility
+uniform float sheetTime;
+const float PI = 3.14159265358979;
+float sheetWave(float x, float y)
+{
+    return 0.3 * sin(2.0 * PI * (x / 2.0 - 0.375 * sheetTime)) * (0.6 + 0.4 * cos(1.2 * y));
+}
+void main()
+{
+    // The sheet's own coordinates: from its corner (-1, -4, 2.3), as sheetWave() takes them.
+    vec2 p = gl_Vertex.xy - vec2(-1.0, -4.0);
+    vec4 position = gl_Vertex + vec4(0.0, 0.0, sheetWave(p.x, p.y), 0.0);
+    gl_Position = gl_ModelViewProjectionMatrix * position;
+    gl_FrontColor = gl_Color;
+}
+)";
+
+/** Sets the sheet's uniform time from each update traversal's frame stamp. */
+class SheetTime : public osg::UniformCallback
+{
+public:
+    void operator()(osg::Uniform* uniform, osg::NodeVisitor* nv) override
+    {
+        if (nv->getFrameStamp()) uniform->set(float(nv->getFrameStamp()->getSimulationTime()));
+    }
+};
+
+/** The bound of every pose of the sheet: its flat grid grown by the wave's amplitude. */
+class SheetBound : public osg::Drawable::ComputeBoundingBoxCallback
+{
+public:
+    osg::BoundingBox computeBound(const osg::Drawable&) const override
+    {
+        return osg::BoundingBox(SHEET_CORNER - osg::Vec3(0, 0, 0.3f),
+                                SHEET_CORNER + osg::Vec3(SHEET_WIDTH, SHEET_DEPTH, 0.3f));
+    }
+};
+
+/** The sheet waved by its vertex shader: the flat grid, the program, the time and the bound. */
+void waveOnGpu(osg::Geometry& sheet)
+{
+    sheet.setUpdateCallback(nullptr);
+    osg::Vec3Array* v = static_cast<osg::Vec3Array*>(sheet.getVertexArray());
+    osg::Vec3Array* n = static_cast<osg::Vec3Array*>(sheet.getNormalArray());
+    for (unsigned int j = 0; j <= SHEET_ROWS; ++j)
+        for (unsigned int i = 0; i <= SHEET_COLUMNS; ++i)
+        {
+            const unsigned int k = j * (SHEET_COLUMNS + 1) + i;
+            (*v)[k] = SHEET_CORNER + osg::Vec3(i * SHEET_WIDTH / SHEET_COLUMNS, j * SHEET_DEPTH / SHEET_ROWS, 0.0f);
+            (*n)[k] = osg::Vec3(0, 0, 1);
+        }
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName("waving sheet");
+    program->setUserValue(osgShadowSilhouette::SilhouetteShadowTechnique::MOVES_VERTICES_USER_VALUE, true);
+    program->addShader(new osg::Shader(osg::Shader::VERTEX, WAVE_VERTEX));
+    osg::StateSet* ss = sheet.getOrCreateStateSet();
+    ss->setAttributeAndModes(program.get());
+    osg::ref_ptr<osg::Uniform> time = new osg::Uniform("sheetTime", 0.0f);
+    time->setUpdateCallback(new SheetTime);
+    ss->addUniform(time.get());
+    sheet.setComputeBoundingBoxCallback(new SheetBound);
+    sheet.dirtyBound();
+}
+
+/** The tube skinned by RigTransformHardware with SKINNING_VERTEX. */
+void skinOnGpu(osgAnimation::RigGeometry& rig)
+{
+    osg::ref_ptr<osgAnimation::RigTransformHardware> skinning = new osgAnimation::RigTransformHardware;
+    skinning->setShader(new osg::Shader(osg::Shader::VERTEX, SKINNING_VERTEX));
+    rig.setRigTransformImplementation(skinning.get());
+}
+
 osg::ref_ptr<osg::Geometry> wavingSheet()
 {
     osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
@@ -261,6 +357,25 @@ Scene animatedScene()
     s.root->addChild(makeLight(osg::Vec4(0.45f, -0.35f, 0.82f, 0.0f)));
     s.view = {osg::Vec3d(0.5, -11, 7), osg::Vec3d(0, 0, 1.0), osg::Vec3d(0, 0, 1), 40.0};
     return s;
+}
+
+unsigned int deformOnGpu(osg::Node& root)
+{
+    struct Mover : osg::NodeVisitor
+    {
+        Mover() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        void apply(osg::Geometry& g) override
+        {
+            auto* rig = dynamic_cast<osgAnimation::RigGeometry*>(&g);
+            if (rig && rig->getName() == "skinned tube")
+                skinOnGpu(*rig), ++moved;
+            else if (g.getName() == "waving sheet")
+                waveOnGpu(g), ++moved;
+        }
+        unsigned int moved = 0;
+    } mover;
+    root.accept(mover);
+    return mover.moved;
 }
 
 unsigned int playAnimations(osg::Node* root, unsigned int* otherManagers)

@@ -23,6 +23,19 @@ namespace osshar {
  *  time, run after run. */
 Scene animatedScene();
 
+/** Moves the deformation of animatedScene()'s tube and sheet (under @p root, before its first
+ *  update traversal) to the GPU, as applications do to spare the CPU: the tube skinned by
+ *  osgAnimation's RigTransformHardware (a vertex shader given in code, since OSG's
+ *  skinning.vert is not installed; up to two bones per vertex, as the tube has), the
+ *  sheet's wave computed in its vertex shader from a uniform time that an update callback
+ *  sets from the frame's simulation time. Both keep their rest positions in their vertex
+ *  arrays (the tube its bind pose, the sheet flat) and carry a bound that holds every pose
+ *  (the sheet's ComputeBoundingBoxCallback; the rig's is osgAnimation's), as a shader's
+ *  displacement needs for OSG's culling. At the same simulation times the poses are those
+ *  of animatedScene(), which therefore gives the exact reference (the reference reads vertex
+ *  arrays: it cannot see a GPU's positions). Returns the number of casters moved (2). */
+unsigned int deformOnGpu(osg::Node& root);
+
 /** Starts, looping from the next update traversal's time, every animation of every
  *  osgAnimation::BasicAnimationManager among the update callbacks (nested ones included) of
  *  the nodes under @p root; other osgAnimation::AnimationManagerBase kinds are counted in

@@ -68,10 +68,11 @@ unsigned char culledWindings(const osg::NodePath& path, const osg::StateSet* own
     return (culled == osg::CullFace::FRONT) == ccwIsFront ? Caster::CULLS_CCW : Caster::CULLS_CW;
 }
 
-/** Whether the program that draws a geometry with the state sets of `path` (then `own`)
- *  has a vertex stage of its own (CasterVertexStages::hasOwnVertexStage()). */
-bool drawnByOwnVertexStage(const osg::NodePath& path, const osg::StateSet* own)
+/** Whether the program that draws @p geometry with the state sets of `path` (then its own)
+ *  moves its vertices (CasterVertexStages::movesVertices()). */
+bool movedOnGpu(const osg::NodePath& path, const osg::Geometry& geometry)
 {
+    const osg::StateSet* own = geometry.getStateSet();
     PathValue program;
     const auto apply = [&](const osg::StateSet& ss) {
         if (const osg::StateSet::RefAttributePair* p = ss.getAttributePair(osg::StateAttribute::PROGRAM))
@@ -81,7 +82,7 @@ bool drawnByOwnVertexStage(const osg::NodePath& path, const osg::StateSet* own)
         if (node->getStateSet()) apply(*node->getStateSet());
     if (own && (path.empty() || path.back()->getStateSet() != own)) apply(*own);
     const auto* p = dynamic_cast<const osg::Program*>(program.attribute);
-    return p && detail::CasterVertexStages::hasOwnVertexStage(*p);
+    return p && detail::CasterVertexStages::movesVertices(*p, geometry);
 }
 
 /** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
@@ -158,7 +159,7 @@ void CasterCollector::apply(osg::Geometry& geometry)
     if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
     caster.culledWindings = culledWindings(getNodePath(), geometry.getStateSet());
     if (cullsASeenSide(caster.culledWindings, caster.closed, caster.world)) caster.seeThrough = true;
-    caster.ownVertexStage = drawnByOwnVertexStage(getNodePath(), geometry.getStateSet());
+    caster.movedOnGpu = movedOnGpu(getNodePath(), geometry);
     _casters.push_back(caster);
 }
 
@@ -208,7 +209,7 @@ bool CasterEdges::update(const std::vector<Caster>& casters, const osg::Vec4d& l
     for (std::size_t i = 0; i < casters.size(); ++i)
     {
         SilhouetteEdges& edges = _silhouettes[i];
-        if (casters[i].ownVertexStage)
+        if (casters[i].movedOnGpu)
         {
             edges = SilhouetteEdges(); // its vertex array is not where it is drawn
             continue;

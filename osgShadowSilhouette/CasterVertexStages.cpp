@@ -1,6 +1,9 @@
 #include "CasterVertexStages.h"
 
 #include <osgShadowSilhouette/ShaderConstants>
+#include <osgShadowSilhouette/SilhouetteShadowTechnique>
+
+#include <osg/ValueObject>
 
 #include <algorithm>
 
@@ -40,6 +43,14 @@ bool CasterVertexStages::hasOwnVertexStage(const osg::Program& program)
         vertex = vertex || type == osg::Shader::VERTEX;
     }
     return vertex;
+}
+
+bool CasterVertexStages::movesVertices(const osg::Program& program, const osg::Drawable& drawable)
+{
+    if (!hasOwnVertexStage(program)) return false;
+    bool moves = false;
+    if (program.getUserValue(SilhouetteShadowTechnique::MOVES_VERTICES_USER_VALUE, moves)) return moves;
+    return std::string(drawable.libraryName()) == "osgAnimation";
 }
 
 std::size_t CasterVertexStages::apply(osgUtil::RenderBin& bin, const osg::StateSet& passState)

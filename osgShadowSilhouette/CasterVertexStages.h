@@ -57,6 +57,12 @@ public:
      *  shader and no geometry or tessellation stage (whose output would be what the eye sees). */
     static bool hasOwnVertexStage(const osg::Program& program);
 
+    /** Whether @p program, drawing @p drawable, puts its vertices elsewhere than its vertex
+     *  array: it has its own vertex stage and either says so
+     *  (SilhouetteShadowTechnique::MOVES_VERTICES_USER_VALUE) or draws one of osgAnimation's
+     *  drawables (RigTransformHardware, MorphTransformHardware). */
+    static bool movesVertices(const osg::Program& program, const osg::Drawable& drawable);
+
     /** Joined programs held (tests). */
     std::size_t size() const;
 

@@ -76,9 +76,9 @@ struct PassServices
     std::function<bool()> applicationPrograms;
     /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */
     std::function<void(bool hybrid, bool lists)> warnAlphaTested;
-    /** Names the casters with a vertex stage of their own that the CPU's geometry of a mode
-     *  leaves out (WarningLog::ownVertexStages()), once each. */
-    std::function<void(const std::vector<Caster>& casters, WarningLog::CpuGeometry mode)> warnOwnVertexStages;
+    /** Names the casters moved by their own vertex stage that the CPU's geometry of a mode
+     *  leaves out (WarningLog::movedOnGpu()), once each. */
+    std::function<void(const std::vector<Caster>& casters, WarningLog::CpuGeometry mode)> warnMovedOnGpu;
 };
 
 /** One cull of one view, as a mode's passes see it. */

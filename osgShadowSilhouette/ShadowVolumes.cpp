@@ -295,7 +295,7 @@ void ShadowVolumeGroup::assembleSwitch(Entry& e, const osg::Vec3d& origin) const
 void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
 {
     const MeshAdjacency& mesh = e.caster.mesh->getAdjacency();
-    if (e.caster.ownVertexStage) // its vertex array is not where it is drawn: no volume (the technique warns)
+    if (e.caster.movedOnGpu) // its vertex array is not where it is drawn: no volume (the technique warns)
     {
         e.silhouette = SilhouetteEdges();
         e.volume = ShadowVolume();

@@ -94,7 +94,7 @@ public:
     void planFrame(ModeFrame& mf) override
     {
         mf.eye.filter = filtersEdges(mf.settings) ? mf.settings.filter : SilhouetteShadowTechnique::FILTER_PCF_2X2;
-        mf.services.warnOwnVertexStages(mf.frame.casterList, WarningLog::CpuGeometry::SilhouetteEdges);
+        mf.services.warnMovedOnGpu(mf.frame.casterList, WarningLog::CpuGeometry::SilhouetteEdges);
     }
 
     bool keepsSlotPasses(const LightPass& pass, const PassSettings& settings) const override

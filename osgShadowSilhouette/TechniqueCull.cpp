@@ -129,9 +129,9 @@ PassServices TechniqueCull::passServices()
     services.cullReceivers = [this](osg::StateSet* pass) { _t.cullReceivers(_cv, _vd, pass); };
     services.applicationPrograms = [this]() { return _t.hasApplicationPrograms(); };
     services.warnAlphaTested = [log = _t._warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
-    services.warnOwnVertexStages = [log = _t._warnings.get()](const std::vector<Caster>& casters,
-                                                              WarningLog::CpuGeometry mode) {
-        log->ownVertexStages(casters, mode);
+    services.warnMovedOnGpu = [log = _t._warnings.get()](const std::vector<Caster>& casters,
+                                                         WarningLog::CpuGeometry mode) {
+        log->movedOnGpu(casters, mode);
     };
     return services;
 }

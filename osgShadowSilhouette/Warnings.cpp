@@ -116,14 +116,14 @@ void WarningLog::alphaTested(bool hybrid, bool lists)
              << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
-void WarningLog::ownVertexStages(const std::vector<Caster>& casters, CpuGeometry mode)
+void WarningLog::movedOnGpu(const std::vector<Caster>& casters, CpuGeometry mode)
 {
     Lock lock(_mutex);
     std::vector<std::string> names;
     std::size_t count = 0, unnamed = 0;
     for (const Caster& caster : casters)
     {
-        if (!caster.ownVertexStage || !_ownVertexStagesNamed.insert({mode, caster.geometry.get()}).second) continue;
+        if (!caster.movedOnGpu || !_movedOnGpuNamed.insert({mode, caster.geometry.get()}).second) continue;
         ++count;
         if (caster.geometry->getName().empty())
             ++unnamed;
@@ -135,7 +135,7 @@ void WarningLog::ownVertexStages(const std::vector<Caster>& casters, CpuGeometry
                            : mode == CpuGeometry::Volumes       ? "SHADOW_VOLUME"
                                                                 : "HYBRID (stencil volumes)";
     OSG_WARN << "osgShadowSilhouette: " << modeName << ": " << count << (count == 1 ? " caster is" : " casters are")
-             << " drawn by a program with a vertex stage of its own: " << listOf(names, unnamed)
+             << " drawn by a program whose vertex stage moves its vertices: " << listOf(names, unnamed)
              << "; the CPU cannot know where that stage puts its triangles, so "
              << (mode == CpuGeometry::Volumes ? "it casts no shadow volume and no shadow"
                  : mode == CpuGeometry::StencilVolumes

@@ -70,7 +70,7 @@ public:
      *  triangles whole. */
     void alphaTested(bool hybrid, bool lists);
     /** What the CPU's geometry of a mode does without the casters drawn by a vertex stage of
-     *  their own (Caster::ownVertexStage). */
+     *  their own that moves their vertices (Caster::movedOnGpu). */
     enum class CpuGeometry
     {
         Volumes,        ///< SHADOW_VOLUME: they cast no shadow
@@ -79,7 +79,7 @@ public:
     };
     /** One message per mode naming the casters of @p casters with a vertex stage of their
      *  own that are not yet named in it. */
-    void ownVertexStages(const std::vector<Caster>& casters, CpuGeometry mode);
+    void movedOnGpu(const std::vector<Caster>& casters, CpuGeometry mode);
 
 private:
     OpenThreads::Mutex _mutex;
@@ -89,7 +89,7 @@ private:
     std::vector<osg::observer_ptr<osg::Drawable>> _alphaTested;
     std::set<std::pair<int, const osg::Drawable*>>
         _alphaTestedNamed; ///< (0 volumes, 1 HYBRID stencil, 2 lists; drawable)
-    std::set<std::pair<CpuGeometry, const osg::Drawable*>> _ownVertexStagesNamed;
+    std::set<std::pair<CpuGeometry, const osg::Drawable*>> _movedOnGpuNamed;
 };
 
 } // namespace detail
