@@ -12,12 +12,20 @@ namespace detail {
 
 const osg::Program* CasterVertexStages::casterProgram(const osgUtil::StateGraph& graph, const osg::StateSet& passState)
 {
-    // The path from the leaves up to the pass camera's state set, then applied top down.
+    bool under = false;
+    const osg::Program* program = programBelow(graph, &passState, under);
+    return under && program && hasOwnVertexStage(*program) ? program : nullptr;
+}
+
+const osg::Program* CasterVertexStages::programBelow(const osgUtil::StateGraph& graph, const osg::StateSet* top,
+                                                     bool& under)
+{
+    // The path from the leaves up to `top` (or the root), then applied top down.
     std::vector<const osg::StateSet*> path;
     const osgUtil::StateGraph* sg = &graph;
-    for (; sg && sg->getStateSet() != &passState; sg = sg->_parent)
+    for (; sg && (!top || sg->getStateSet() != top); sg = sg->_parent)
         if (sg->getStateSet()) path.push_back(sg->getStateSet());
-    if (!sg) return nullptr; // not drawn under the pass's state: not a caster of it
+    under = !top || sg;
     const osg::Program* program = nullptr;
     bool overridden = false;
     for (auto it = path.rbegin(); it != path.rend(); ++it)
@@ -27,7 +35,55 @@ const osg::Program* CasterVertexStages::casterProgram(const osgUtil::StateGraph&
         program = dynamic_cast<const osg::Program*>(pair->first.get());
         overridden = (pair->second & osg::StateAttribute::OVERRIDE) != 0;
     }
-    return program && hasOwnVertexStage(*program) ? program : nullptr;
+    return program;
+}
+
+std::size_t CasterVertexStages::keepMovedReceivers(osgUtil::RenderBin& bin, const osg::StateSet& pass, bool base)
+{
+    std::size_t changed = 0;
+    const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
+    for (osgUtil::StateGraph* graph : graphs)
+    {
+        bool under = false;
+        const osg::Program* own = graph->_leaves.empty() ? nullptr : programBelow(*graph, &pass, under);
+        if (!under || !own || programBelow(*graph, nullptr, under) == own) continue; // drawn as they are
+        auto& leaves = graph->_leaves;
+        const auto moved = std::stable_partition(leaves.begin(), leaves.end(), [&](const auto& leaf) {
+            return !leaf->getDrawable() || !movesVertices(*own, *leaf->getDrawable());
+        });
+        if (moved == leaves.end()) continue;
+        changed += std::size_t(leaves.end() - moved);
+        if (base)
+        {
+            osg::StateSet* ss = nullptr;
+            {
+                OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+                ss = ownProgramState(*own);
+            }
+            osgUtil::StateGraph* child = graph->find_or_insert(ss);
+            if (child->_leaves.empty()) bin.addStateGraph(child);
+            for (auto it = moved; it != leaves.end(); ++it) child->addLeaf(it->get());
+        }
+        leaves.erase(moved, leaves.end());
+    }
+    auto& list = bin.getStateGraphList();
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [](const osgUtil::StateGraph* g) { return g->_leaves.empty(); }),
+        list.end());
+    for (auto& nested : bin.getRenderBinList()) changed += keepMovedReceivers(*nested.second, pass, base);
+    return changed;
+}
+
+osg::StateSet* CasterVertexStages::ownProgramState(const osg::Program& program)
+{
+    prune();
+    for (auto& entry : _own)
+        if (entry.first.get() == &program) return entry.second.get();
+    osg::ref_ptr<osg::StateSet> ss = new osg::StateSet;
+    const auto protectedOn = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE | osg::StateAttribute::PROTECTED;
+    ss->setAttributeAndModes(const_cast<osg::Program*>(&program), protectedOn);
+    _own.emplace_back(&program, ss);
+    return ss.get();
 }
 
 bool CasterVertexStages::hasOwnVertexStage(const osg::Program& program)
@@ -126,6 +182,8 @@ osg::StateSet* CasterVertexStages::joined(const osg::Program& caster, const osg:
 
 void CasterVertexStages::prune()
 {
+    _own.erase(std::remove_if(_own.begin(), _own.end(), [](const auto& entry) { return !entry.first.valid(); }),
+               _own.end());
     for (auto it = _joined.begin(); it != _joined.end();)
         it = it->second.caster.valid() && it->second.pass.valid() ? std::next(it) : _joined.erase(it);
 }
@@ -141,6 +199,7 @@ void CasterVertexStages::resizeGLObjectBuffers(unsigned int maxSize)
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     for (auto& entry : _joined)
         if (entry.second.stateSet) entry.second.stateSet->resizeGLObjectBuffers(maxSize);
+    for (auto& entry : _own) entry.second->resizeGLObjectBuffers(maxSize);
 }
 
 void CasterVertexStages::releaseGLObjects(osg::State* state) const
@@ -148,6 +207,7 @@ void CasterVertexStages::releaseGLObjects(osg::State* state) const
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     for (const auto& entry : _joined)
         if (entry.second.stateSet) entry.second.stateSet->releaseGLObjects(state);
+    // Not the state sets of _own: their programs are the scene's, which the scene releases.
 }
 
 } // namespace detail

@@ -63,6 +63,14 @@ public:
      *  drawables (RigTransformHardware, MorphTransformHardware). */
     static bool movesVertices(const osg::Program& program, const osg::Drawable& drawable);
 
+    /** After a receivers' pass of the eye under @p pass: the leaves whose own program (set
+     *  below @p pass) moves their vertices (movesVertices()) but that the pass draws with
+     *  another (an OVERRIDE above it: the stencil modes' passes) would stand at their rest
+     *  pose. The @p base pass draws them with their own program (`PROTECTED`), which shades
+     *  them itself; every other pass (the lights' additive and mask passes) leaves them out.
+     *  Returns the number of leaves moved or left out. */
+    std::size_t keepMovedReceivers(osgUtil::RenderBin& bin, const osg::StateSet& pass, bool base);
+
     /** Joined programs held (tests). */
     std::size_t size() const;
 
@@ -80,11 +88,17 @@ protected:
     /** The state set of @p caster's vertex stage joined to @p pass's other stages. */
     osg::StateSet* joined(const osg::Program& caster, const osg::Program& pass);
     static std::vector<const osg::Shader*> joinedShaders(const osg::Program& caster, const osg::Program& pass);
+    /** The program the state sets of @p graph's path below @p top (all of them: null) apply,
+     *  as OSG applies programs; @p under: whether the path reaches @p top. */
+    static const osg::Program* programBelow(const osgUtil::StateGraph& graph, const osg::StateSet* top, bool& under);
+    /** A state set that applies @p program `PROTECTED` (cached). */
+    osg::StateSet* ownProgramState(const osg::Program& program);
     void prune();
 
     std::function<void(osg::Program*)> _watchLink;
     mutable OpenThreads::Mutex _mutex;
     std::map<std::pair<const osg::Program*, const osg::Program*>, Joined> _joined;
+    std::vector<std::pair<osg::observer_ptr<const osg::Program>, osg::ref_ptr<osg::StateSet>>> _own;
 };
 
 } // namespace detail

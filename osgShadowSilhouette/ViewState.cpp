@@ -161,7 +161,8 @@ void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::Bounding
     }
 }
 
-void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass)
+void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
+                   CasterVertexStages* stages)
 {
     const osgShadow::ShadowSettings* settings = scene.getShadowSettings();
     const unsigned int mask = cv.getTraversalMask();
@@ -173,6 +174,10 @@ void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, Vi
     if (pass) cv.pushStateSet(pass);
     scene.osg::Group::traverse(cv);
     if (pass) cv.popStateSet();
+    // Receivers moved by their own vertex stage keep it where a pass overrides programs.
+    osgUtil::RenderBin* bin = cv.getCurrentRenderBin();
+    if (stages && pass && bin && bin->getStage())
+        stages->keepMovedReceivers(*bin->getStage(), *pass, pass == vd.receiverPassStateSet.get());
     cv.popStateSet();
     if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
     cv.setComputeNearFarMode(nearFar);

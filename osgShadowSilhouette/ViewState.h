@@ -3,6 +3,7 @@
 #ifndef OSGSHADOWSILHOUETTE_VIEWSTATE_H
 #define OSGSHADOWSILHOUETTE_VIEWSTATE_H
 
+#include "CasterVertexStages.h"
 #include "EyePass.h"
 #include "FrameData.h"
 #include "ScreenVisibility.h"
@@ -56,7 +57,8 @@ void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg:
  *  view's receiver state and @p pass (may be null); the ShadowSettings'
  *  ComputeNearFarModeOverride decides how the view computes its near and far planes over the
  *  receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits. */
-void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass);
+void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
+                   CasterVertexStages* stages = nullptr);
 
 /** Culls the depth prepass of the receivers (DepthPrepass) through @p cullReceivers under the
  *  view's prepass state, and keeps of it only what it draws exactly as the eye pass does. */
