@@ -68,9 +68,9 @@ unsigned char culledWindings(const osg::NodePath& path, const osg::StateSet* own
     return (culled == osg::CullFace::FRONT) == ccwIsFront ? Caster::CULLS_CCW : Caster::CULLS_CW;
 }
 
-/** Whether the program that draws @p geometry with the state sets of `path` (then its own)
- *  moves its vertices (CasterVertexStages::movesVertices()). */
-bool movedOnGpu(const osg::NodePath& path, const osg::Geometry& geometry)
+} // namespace
+
+bool drawnMovedOnGpu(const osg::NodePath& path, const osg::Geometry& geometry)
 {
     const osg::StateSet* own = geometry.getStateSet();
     PathValue program;
@@ -84,6 +84,8 @@ bool movedOnGpu(const osg::NodePath& path, const osg::Geometry& geometry)
     const auto* p = dynamic_cast<const osg::Program*>(program.attribute);
     return p && detail::CasterVertexStages::movesVertices(*p, geometry);
 }
+
+namespace {
 
 /** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
  *  ray may pass, so that the ray goes on behind the surface. A closed mesh wound outward
@@ -159,7 +161,7 @@ void CasterCollector::apply(osg::Geometry& geometry)
     if (geometry.getStateSet() && seeThrough(*geometry.getStateSet())) caster.seeThrough = true; // a billboard's
     caster.culledWindings = culledWindings(getNodePath(), geometry.getStateSet());
     if (cullsASeenSide(caster.culledWindings, caster.closed, caster.world)) caster.seeThrough = true;
-    caster.movedOnGpu = movedOnGpu(getNodePath(), geometry);
+    caster.movedOnGpu = drawnMovedOnGpu(getNodePath(), geometry);
     _casters.push_back(caster);
 }
 

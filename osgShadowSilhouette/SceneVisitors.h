@@ -3,6 +3,7 @@
 #ifndef OSGSHADOWSILHOUETTE_SCENEVISITORS_H
 #define OSGSHADOWSILHOUETTE_SCENEVISITORS_H
 
+#include <osgShadowSilhouette/CasterEdges>
 #include <osgShadowSilhouette/LightSpace>
 #include <osgShadowSilhouette/MeshCache>
 #include <osgShadowSilhouette/ShaderConstants>
@@ -88,6 +89,7 @@ public:
             for (int i = 0; i < 16; ++i) mix(std::hash<double>()(_matrixStack.back().ptr()[i]));
         const osg::Geometry* geometry = drawable.asGeometry();
         if (!geometry) return;
+        if (drawnMovedOnGpu(getNodePath(), *geometry)) mixUniforms();
         if (const osg::Array* vertices = geometry->getVertexArray())
         {
             mix(std::hash<const void*>()(vertices));
@@ -103,6 +105,20 @@ public:
     void mix(std::size_t value) { signature ^= value + 0x9e3779b97f4a7c15ull + (signature << 6) + (signature >> 2); }
 
 private:
+    /** A caster moved by its vertex stage moves when a uniform on its path changes (the
+     *  bones' matrix palette of hardware skinning), its arrays and matrices unchanged: each
+     *  uniform's version takes part in the signature, so that no light pass is kept. */
+    void mixUniforms()
+    {
+        for (const osg::Node* node : getNodePath())
+            if (const osg::StateSet* ss = node->getStateSet())
+                for (const auto& entry : ss->getUniformList())
+                {
+                    mix(std::hash<const void*>()(entry.second.first.get()));
+                    mix(entry.second.first->getModifiedCount());
+                }
+    }
+
     void addPart(const osg::Drawable& drawable)
     {
         const osg::Geometry* geometry = drawable.asGeometry();
