@@ -26,6 +26,7 @@
 #include "Peers.h"
 #include "RenderOptions.h"
 #include "Setup.h"
+#include "Text.h"
 
 #include <osg/LightSource>
 #include <osg/Program>
@@ -46,6 +47,7 @@
 namespace {
 
 using osgShadowSilhouette::SilhouetteShadowTechnique;
+using osshar::splitList;
 
 const char* const CSV_HEADER = "scene,technique,map_size,width,height,frames,frame_ms_median,gpu_ms_median,"
                                "geometry_pixels,wrong_pixels,wrong_pct,coverage_mismatch,silhouette_pixel_pct,notes";
@@ -74,15 +76,6 @@ struct Row
     double silhouettePct = -1; ///< share of geometry pixels treated as silhouette pixels; -1: does not apply
     std::string notes;
 };
-
-std::vector<std::string> splitList(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string item; std::getline(ss, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
 
 /** Our modes that this build implements, then the peers. */
 std::vector<std::string> availableTechniques()
@@ -271,8 +264,6 @@ osg::ref_ptr<osg::Program> userProgram(const osshar::PreparedScene& scene)
     return program;
 }
 
-std::string fmt(double v, int decimals);
-
 /** Renders, times and scores one technique at one map size. */
 bool measure(const std::string& sceneName, const std::string& technique, unsigned int mapSize, const Options& o,
              const SceneReference& ref, osshar::Renderer& renderer, Row& row, std::string& error)
@@ -301,7 +292,7 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
     {
         const SilhouetteShadowTechnique::Statistics stats = ours->getStatistics();
         if (stats.volumeOverdraw() >= 0.0)
-            row.notes = "volume overdraw " + fmt(stats.volumeOverdraw(), 2) + " fragments/px";
+            row.notes = "volume overdraw " + osshar::fixed(stats.volumeOverdraw(), 2) + " fragments/px";
         if (stats.screenVisibility)
             row.notes += std::string(row.notes.empty() ? "" : "; ") + "application program through screen visibility";
         if (stats.blockersTested > 0)
@@ -329,13 +320,6 @@ bool measure(const std::string& sceneName, const std::string& technique, unsigne
     return true;
 }
 
-std::string fmt(double v, int decimals)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-    return buf;
-}
-
 std::string csvField(const std::string& s)
 {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -347,10 +331,11 @@ std::string csvField(const std::string& s)
 std::string csvLine(const Row& r)
 {
     std::ostringstream s;
-    s << r.scene << ',' << r.technique << ',' << r.mapSize << ',' << r.width << ',' << r.height << ',' << r.frames << ','
-      << fmt(r.frameMs, 3) << ',' << (r.gpuMs >= 0 ? fmt(r.gpuMs, 3) : "") << ',' << r.cmp.geometryPixels << ','
-      << r.cmp.wrongPixels << ',' << fmt(r.cmp.wrongPct, 4) << ',' << r.cmp.coverageMismatch << ','
-      << (r.silhouettePct >= 0 ? fmt(r.silhouettePct, 3) : "") << ',' << csvField(r.notes);
+    s << r.scene << ',' << r.technique << ',' << r.mapSize << ',' << r.width << ',' << r.height << ',' << r.frames
+      << ',' << osshar::fixed(r.frameMs, 3) << ',' << (r.gpuMs >= 0 ? osshar::fixed(r.gpuMs, 3) : "") << ','
+      << r.cmp.geometryPixels << ',' << r.cmp.wrongPixels << ',' << osshar::fixed(r.cmp.wrongPct, 4) << ','
+      << r.cmp.coverageMismatch << ',' << (r.silhouettePct >= 0 ? osshar::fixed(r.silhouettePct, 3) : "") << ','
+      << csvField(r.notes);
     return s.str();
 }
 
@@ -412,7 +397,7 @@ std::string mapText(const Row& r)
 
 std::string pointText(const Row& r)
 {
-    return fmt(r.cmp.wrongPct, 3) + "% @ " + fmt(r.frameMs, 1) + " ms (" + mapText(r) + ")";
+    return osshar::fixed(r.cmp.wrongPct, 3) + "% @ " + osshar::fixed(r.frameMs, 1) + " ms (" + mapText(r) + ")";
 }
 
 /** Per scene, each of our modes against the peers: a peer row that is at least as accurate as
@@ -436,9 +421,10 @@ void writeLosses(std::ostream& md, const std::vector<Row>& rows)
                         faster = r;
                 const Row* pb = bestPoint(pr);
                 if (faster)
-                    md << "- " << scene << ": **" << ours << "** (" << pointText(*b) << ") is beaten by " << shortName(peer)
-                       << " at " << pointText(*faster) << ": as accurate and " << fmt(b->frameMs / faster->frameMs, 2)
-                       << "x faster.\n", ++lines;
+                    md << "- " << scene << ": **" << ours << "** (" << pointText(*b) << ") is beaten by "
+                       << shortName(peer) << " at " << pointText(*faster) << ": as accurate and "
+                       << osshar::fixed(b->frameMs / faster->frameMs, 2) << "x faster.\n",
+                        ++lines;
                 else if (pb && pb->cmp.wrongPct * 1.10 + 0.002 < b->cmp.wrongPct)
                     md << "- " << scene << ": **" << ours << "** (" << pointText(*b) << ") never gets as accurate as "
                        << shortName(peer) << " (" << pointText(*pb) << ").\n", ++lines;
@@ -480,10 +466,11 @@ void writeSceneTable(std::ostream& md, const std::vector<Row>& rows, const std::
     for (const Row* r : sceneRows)
     {
         const bool onFront = std::find(front.begin(), front.end(), r) != front.end();
-        md << "| " << r->technique << " | " << mapText(*r) << " | " << fmt(r->frameMs, 2) << " | "
-           << (r->gpuMs >= 0 ? fmt(r->gpuMs, 2) : "-") << " | " << fmt(r->cmp.wrongPct, 3) << " | " << r->cmp.wrongPixels
-           << " | " << r->cmp.coverageMismatch << " | " << (r->silhouettePct >= 0 ? fmt(r->silhouettePct, 2) : "-")
-           << " | " << (onFront ? "yes" : "") << " |\n";
+        md << "| " << r->technique << " | " << mapText(*r) << " | " << osshar::fixed(r->frameMs, 2) << " | "
+           << (r->gpuMs >= 0 ? osshar::fixed(r->gpuMs, 2) : "-") << " | " << osshar::fixed(r->cmp.wrongPct, 3) << " | "
+           << r->cmp.wrongPixels << " | " << r->cmp.coverageMismatch << " | "
+           << (r->silhouettePct >= 0 ? osshar::fixed(r->silhouettePct, 2) : "-") << " | " << (onFront ? "yes" : "")
+           << " |\n";
     }
 }
 
@@ -619,7 +606,8 @@ bool benchScene(const std::string& sceneName, const Options& o, osshar::Renderer
     }
     const SceneReference ref = computeReference(scene, o);
     const ossref::TriangleSoup soup = ossref::collectTriangles(*scene.content);
-    note = std::to_string(soup.size()) + " triangles; reference (two BVHs, two masks) in " + fmt(ref.seconds, 2) + " s.";
+    note = std::to_string(soup.size()) + " triangles; reference (two BVHs, two masks) in " +
+           osshar::fixed(ref.seconds, 2) + " s.";
     std::fprintf(stderr, "scene %s: %zu triangles, reference in %.2f s\n", sceneName.c_str(), soup.size(), ref.seconds);
     for (const std::string& technique : o.techniques)
     {

@@ -1,11 +1,10 @@
 #include "Offscreen.h"
+#include "Text.h"
 
 #include <osg/DisplaySettings>
 #include <osg/GLExtensions>
 #include <osg/Timer>
 #include <osgViewer/GraphicsWindow>
-
-#include <algorithm>
 
 namespace osshar {
 
@@ -16,14 +15,6 @@ class NoSwap : public osg::GraphicsContext::SwapCallback
 public:
     void swapBuffersImplementation(osg::GraphicsContext*) override {}
 };
-
-double median(std::vector<double> v)
-{
-    if (v.empty()) return -1.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 } // namespace
 
