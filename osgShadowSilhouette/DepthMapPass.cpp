@@ -154,6 +154,7 @@ bool cullDepthMap(ModeFrame& mf, ModePass& mode, LightPass& pass, const LightDes
     {
         scene->setCasters(!reuse);
         scene->setCasterStages(mf.settings.casterStages);
+        scene->setSplitFaces(mf.settings.listedDrawables);
         scene->setExcluded(frame.nonFinite);
         scene->setBillboards(frame.billboards);
     }

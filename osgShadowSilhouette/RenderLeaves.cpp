@@ -5,15 +5,14 @@
 namespace osgShadowSilhouette {
 namespace detail {
 
-namespace {
-
-/** Whether the state graph `sg` lies under the state set `ss`. */
 bool under(const osgUtil::StateGraph* sg, const osg::StateSet* ss)
 {
     for (; sg; sg = sg->_parent)
         if (sg->getStateSet() == ss) return true;
     return false;
 }
+
+namespace {
 
 /** Whether state set ss sets attribute `type`; above the receivers' state set only an
  *  OVERRIDE one reaches the eye pass (the receivers' program and LEQUAL replace the rest). */

@@ -51,6 +51,9 @@ void forEachLeaf(osgUtil::RenderBin& bin, const Visit& visit)
     for (auto& nested : bin.getRenderBinList()) forEachLeaf(*nested.second, visit);
 }
 
+/** Whether the state graph @p sg lies under the state set @p ss. */
+bool under(const osgUtil::StateGraph* sg, const osg::StateSet* ss);
+
 /** Whether @p bin or a bin nested in it holds a leaf. */
 bool holdsLeaves(osgUtil::RenderBin& bin);
 
@@ -106,6 +109,8 @@ public:
     }
     /** The casters with a vertex stage of their own keep it (@p stages: the technique's). */
     void setCasterStages(CasterVertexStages* stages) { _casterStages = stages; }
+    /** The casters' quads and polygons are drawn as @p faces splits them (ListedDrawables::faces()). */
+    void setSplitFaces(ListedDrawables* faces) { _faces = faces; }
     /** The draws are those @p listed gives (the triangle lists: triangles only). */
     void setListed(ListedDrawables* listed) { _listed = listed; }
     /** The billboard drawables are drawn as the view turned them (FrameContext::billboards). */
@@ -126,6 +131,7 @@ public:
             if (cv && _billboards && !_billboards->empty() && cv->getCurrentRenderBin() && cv->getCurrentCamera())
                 turnBillboardLeaves(*cv->getCurrentRenderBin(), *_billboards, cv->getCurrentCamera()->getViewMatrix());
             if (cv && _listed && cv->getCurrentRenderBin()) _listed->apply(*cv->getCurrentRenderBin());
+            if (cv && _faces && cv->getCurrentRenderBin()) _faces->splitFaces(*cv->getCurrentRenderBin());
         }
         traverse(node, nv); // the camera's own children (BlockerQueries), after the casters
     }
@@ -137,6 +143,7 @@ private:
     std::unordered_set<const osg::Drawable*> _marked;
     osg::ref_ptr<osg::StateSet> _markedStateSet;
     osg::ref_ptr<ListedDrawables> _listed;
+    osg::ref_ptr<ListedDrawables> _faces;
     osg::ref_ptr<CasterVertexStages> _casterStages;
     std::shared_ptr<const BillboardMatrices> _billboards;
 };

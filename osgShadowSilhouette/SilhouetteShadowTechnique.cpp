@@ -434,7 +434,8 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, detail::F
 
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, detail::ViewData& vd, osg::StateSet* pass)
 {
-    detail::cullReceivers(cv, *_shadowedScene, vd, pass, _shared ? _shared->casterStages.get() : nullptr);
+    detail::cullReceivers(cv, *_shadowedScene, vd, pass, _shared ? _shared->casterStages.get() : nullptr,
+                          _listedDrawables.get());
 }
 
 detail::Warn SilhouetteShadowTechnique::warner() const

@@ -456,13 +456,22 @@ struct TriangleIndexSink
     }
 };
 
-/** The vertex attribute arrays of @p geometry (a skinning program's bone weights, set after
- *  its first frames). */
+/** The arrays of @p geometry besides its vertices, which a stand-in shares: normals, colours,
+ *  texture coordinates (the eye's passes draw stand-ins too) and the vertex attributes (a
+ *  skinning program's bone weights, set after its first frames). */
 std::vector<const osg::Array*> attributeArrays(const osg::Geometry& geometry)
 {
-    std::vector<const osg::Array*> arrays;
+    std::vector<const osg::Array*> arrays{geometry.getNormalArray(), geometry.getColorArray(),
+                                          geometry.getSecondaryColorArray(), geometry.getFogCoordArray()};
+    for (const osg::ref_ptr<osg::Array>& array : geometry.getTexCoordArrayList()) arrays.push_back(array.get());
     for (const osg::ref_ptr<osg::Array>& array : geometry.getVertexAttribArrayList()) arrays.push_back(array.get());
     return arrays;
+}
+
+/** Whether a primitive mode draws faces that OSG's functors and GL may split differently. */
+bool splitFace(GLenum mode)
+{
+    return mode == GL_QUADS || mode == GL_QUAD_STRIP || mode == GL_POLYGON;
 }
 
 } // namespace
@@ -481,13 +490,44 @@ osg::Drawable* ListedDrawables::get(osg::Drawable& drawable)
             return !p || isTriangleMode(p->getMode());
         }))
         return geometry;
+    return standIn(*geometry);
+}
+
+osg::Geometry* ListedDrawables::standIn(osg::Geometry& geometry)
+{
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
-    auto found = _standIns.find(geometry);
-    if (found != _standIns.end() && isCurrent(found->second, *geometry)) return found->second.geometry.get();
+    auto found = _standIns.find(&geometry);
+    if (found != _standIns.end() && isCurrent(found->second, geometry)) return found->second.geometry.get();
     prune();
-    StandIn& standIn = _standIns[geometry];
-    standIn = makeStandIn(*geometry);
-    return standIn.geometry.get();
+    StandIn& made = _standIns[&geometry];
+    made = makeStandIn(geometry);
+    return made.geometry.get();
+}
+
+osg::Drawable* ListedDrawables::faces(osg::Drawable& drawable)
+{
+    osg::Geometry* geometry = drawable.asGeometry();
+    if (!geometry || geometry->getDrawCallback()) return &drawable;
+    bool split = false;
+    for (const osg::ref_ptr<osg::PrimitiveSet>& p : geometry->getPrimitiveSetList())
+    {
+        if (!p) continue;
+        if (!isTriangleMode(p->getMode()) && !splitFace(p->getMode())) return &drawable; // lines, points
+        split = split || splitFace(p->getMode());
+    }
+    osg::Geometry* made = split ? standIn(*geometry) : nullptr;
+    return made ? made : &drawable;
+}
+
+void ListedDrawables::splitFaces(osgUtil::RenderBin& bin, const osg::StateSet* under)
+{
+    for (osgUtil::StateGraph* graph : bin.getStateGraphList())
+    {
+        if (under && !detail::under(graph, under)) continue;
+        for (const osg::ref_ptr<osgUtil::RenderLeaf>& leaf : graph->_leaves)
+            if (leaf->_drawable) leaf->_drawable = faces(*leaf->_drawable);
+    }
+    for (auto& nested : bin.getRenderBinList()) splitFaces(*nested.second, under);
 }
 
 void ListedDrawables::apply(osgUtil::RenderBin& bin)

@@ -162,7 +162,7 @@ void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::Bounding
 }
 
 void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
-                   CasterVertexStages* stages)
+                   CasterVertexStages* stages, ListedDrawables* faces)
 {
     const osgShadow::ShadowSettings* settings = scene.getShadowSettings();
     const unsigned int mask = cv.getTraversalMask();
@@ -178,6 +178,8 @@ void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, Vi
     osgUtil::RenderBin* bin = cv.getCurrentRenderBin();
     if (stages && pass && bin && bin->getStage())
         stages->keepMovedReceivers(*bin->getStage(), *pass, pass == vd.receiverPassStateSet.get());
+    // Quads and polygons split as the shadow geometry and the light passes split them.
+    if (faces && bin && bin->getStage()) faces->splitFaces(*bin->getStage(), pass ? pass : vd.receiverStateSet.get());
     cv.popStateSet();
     if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
     cv.setComputeNearFarMode(nearFar);

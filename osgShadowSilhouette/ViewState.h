@@ -8,6 +8,8 @@
 #include "FrameData.h"
 #include "ScreenVisibility.h"
 
+#include <osgShadowSilhouette/TriangleListPass>
+
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/CullVisitor>
 
@@ -58,7 +60,7 @@ void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg:
  *  ComputeNearFarModeOverride decides how the view computes its near and far planes over the
  *  receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits. */
 void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
-                   CasterVertexStages* stages = nullptr);
+                   CasterVertexStages* stages = nullptr, ListedDrawables* faces = nullptr);
 
 /** Culls the depth prepass of the receivers (DepthPrepass) through @p cullReceivers under the
  *  view's prepass state, and keeps of it only what it draws exactly as the eye pass does. */
