@@ -508,6 +508,9 @@ osg::Drawable* ListedDrawables::faces(osg::Drawable& drawable)
 {
     osg::Geometry* geometry = drawable.asGeometry();
     if (!geometry || geometry->getDrawCallback()) return &drawable;
+    // An array bound per primitive set would pair its values with the stand-in's sets.
+    for (const osg::Array* array : attributeArrays(*geometry))
+        if (array && array->getBinding() == osg::Array::BIND_PER_PRIMITIVE_SET) return &drawable;
     bool split = false;
     for (const osg::ref_ptr<osg::PrimitiveSet>& p : geometry->getPrimitiveSetList())
     {
@@ -574,6 +577,8 @@ ListedDrawables::StandIn ListedDrawables::makeStandIn(osg::Geometry& source)
     // shader's bone weights: CasterVertexStages.h); shared, not copied.
     geometry->setNormalArray(source.getNormalArray());
     geometry->setColorArray(source.getColorArray());
+    geometry->setSecondaryColorArray(source.getSecondaryColorArray());
+    geometry->setFogCoordArray(source.getFogCoordArray());
     geometry->setTexCoordArrayList(source.getTexCoordArrayList());
     geometry->setVertexAttribArrayList(source.getVertexAttribArrayList());
     osg::ref_ptr<osg::DrawElementsUInt> faces = new osg::DrawElementsUInt(GL_TRIANGLES);
