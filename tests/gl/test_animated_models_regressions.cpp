@@ -8,11 +8,14 @@
 #include "GLTestSupport.h"
 #include "Meshes.h"
 #include "ModeBounds.h"
+#include "MovedCasters.h"
 
 #include <osg/Geode>
 #include <osg/Program>
 
 using osgShadowSilhouette::SilhouetteShadowTechnique;
+using osstest::FixedBound;
+using osstest::PLAIN_FRAGMENT;
 using osstest::ShadowedRender;
 
 namespace {
@@ -29,19 +32,6 @@ void main()
     gl_FrontColor = gl_Color;
 }
 )";
-
-const char* const PLAIN_FRAGMENT = R"(#version 400 compatibility
-void main() { gl_FragColor = gl_Color; }
-)";
-
-/** A bound that holds both poses, computed once, as osgAnimation's
- *  RigComputeBoundingBoxCallback gives a skinned drawable. */
-struct FixedBound : public osg::Drawable::ComputeBoundingBoxCallback
-{
-    explicit FixedBound(const osg::BoundingBox& b) : box(b) {}
-    osg::BoundingBox computeBound(const osg::Drawable&) const override { return box; }
-    osg::BoundingBox box;
-};
 
 /** A 24 x 24 ground and a sphere, moved by its vertex shader (@p onGpu: by the uniform
  *  `displacement`, from SPHERE_DRAWN to @p pose) or placed at @p pose here; a sun, and a

@@ -6,6 +6,7 @@
 #include "GLTestSupport.h"
 #include "Meshes.h"
 #include "ModeBounds.h"
+#include "MovedCasters.h"
 #include "NotifyCapture.h"
 
 #include <osg/Geode>
@@ -14,6 +15,8 @@
 #include <cmath>
 
 using osgShadowSilhouette::SilhouetteShadowTechnique;
+using osstest::FixedBound;
+using osstest::PLAIN_FRAGMENT;
 using osstest::ShadowedRender;
 
 namespace {
@@ -51,10 +54,6 @@ void main()
 }
 )";
 
-const char* const PLAIN_FRAGMENT = R"(#version 400 compatibility
-void main() { gl_FragColor = gl_Color; }
-)";
-
 osg::Vec3 bentSphereVertex(const osg::Vec3& drawn)
 {
     osg::Vec3 v = drawn + (SPHERE_CAST - SPHERE_DRAWN);
@@ -67,15 +66,6 @@ float plateLift(float x, float y)
 {
     return 3.0f - PLATE_DRAWN_Z + 0.25f * x + 0.1f * y;
 }
-
-/** Gives a drawable moved by its vertex shader the bound of its moved shape, as OSG's own
- *  culling (and the technique's fitting of the light frusta) needs of it. */
-struct FixedBound : public osg::Drawable::ComputeBoundingBoxCallback
-{
-    explicit FixedBound(const osg::BoundingBox& b) : box(b) {}
-    osg::BoundingBox computeBound(const osg::Drawable&) const override { return box; }
-    osg::BoundingBox box;
-};
 
 osg::BoundingBox boundOf(const osg::Vec3Array& v)
 {
