@@ -239,7 +239,6 @@ public:
         planListReads(mf);
         mf.stats.triangleLists = frame.triangleLists;
         mf.services.warnAlphaTested(true, frame.triangleLists);
-        if (!frame.triangleLists) mf.services.warnMovedOnGpu(frame.casterList, WarningLog::CpuGeometry::StencilVolumes);
         frame.stencil = !frame.triangleLists;
         // Statistics of the lists: the fragments resolved exactly, counted in the eye pass.
         mf.eye.countExact = frame.triangleLists && mf.settings.recordingStats;

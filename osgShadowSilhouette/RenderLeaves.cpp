@@ -86,6 +86,27 @@ void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable
 }
 
 /** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
+std::vector<const osg::Array*> attributeArrays(const osg::Geometry& geometry)
+{
+    std::vector<const osg::Array*> arrays{geometry.getNormalArray(), geometry.getColorArray(),
+                                          geometry.getSecondaryColorArray(), geometry.getFogCoordArray()};
+    for (const osg::ref_ptr<osg::Array>& array : geometry.getTexCoordArrayList()) arrays.push_back(array.get());
+    for (const osg::ref_ptr<osg::Array>& array : geometry.getVertexAttribArrayList()) arrays.push_back(array.get());
+    return arrays;
+}
+
+void shareArrays(osg::Geometry& standIn, osg::Geometry& source)
+{
+    standIn.setUseVertexBufferObjects(source.getUseVertexBufferObjects());
+    standIn.setVertexArray(source.getVertexArray());
+    standIn.setNormalArray(source.getNormalArray());
+    standIn.setColorArray(source.getColorArray());
+    standIn.setSecondaryColorArray(source.getSecondaryColorArray());
+    standIn.setFogCoordArray(source.getFogCoordArray());
+    standIn.setTexCoordArrayList(source.getTexCoordArrayList());
+    standIn.setVertexAttribArrayList(source.getVertexAttribArrayList());
+}
+
 bool mirrors(const osgUtil::RenderLeaf& leaf)
 {
     if (!leaf._modelview) return false;

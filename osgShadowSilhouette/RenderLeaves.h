@@ -8,6 +8,7 @@
 #include <osgShadowSilhouette/TriangleListPass>
 #include <osgShadowSilhouette/ViewPoint>
 
+#include <osg/Geometry>
 #include <osg/NodeCallback>
 #include <osgShadow/ShadowedScene>
 #include <osgUtil/RenderBin>
@@ -68,6 +69,16 @@ void keepByBin(osgUtil::RenderBin& bin, int after, bool keepLate);
 
 /** Removes from a render bin (and its nested bins) the leaves that draw one of @p drawables. */
 void removeLeaves(osgUtil::RenderBin& bin, const std::vector<const osg::Drawable*>& drawables);
+
+/** The arrays of @p geometry besides its vertices, which a stand-in shares: normals, colours,
+ *  texture coordinates (the eye's passes draw stand-ins too) and the vertex attributes (a
+ *  skinning program's bone weights, set after its first frames). */
+std::vector<const osg::Array*> attributeArrays(const osg::Geometry& geometry);
+
+/** Gives the stand-in @p standIn every array of @p source (shared, not copied), and draws it
+ *  with buffer objects where the source does: a stand-in with buffer objects would attach
+ *  them to the source's arrays, which the source draws without. */
+void shareArrays(osg::Geometry& standIn, osg::Geometry& source);
 
 /** Whether a leaf's model-view matrix mirrors (negative determinant of its 3x3 part). */
 bool mirrors(const osgUtil::RenderLeaf& leaf);

@@ -1,6 +1,7 @@
 #include <osgShadowSilhouette/ShadowVolumes>
 
 #include "GLConstants.h"
+#include "GpuVolumes.h"
 #include "RenderLeaves.h"
 #include <osgShadowSilhouette/ShaderConstants>
 
@@ -663,6 +664,7 @@ void StencilShadowPasses::forEachHolder(const Apply& apply) const
     apply(_barrier.get());
     apply(_finalPass.get());
     apply(_finalBarrierState.get());
+    apply(_gpu.get());
     for (const Slot& s : _slots)
     {
         apply(s.volumes.get());
@@ -672,7 +674,8 @@ void StencilShadowPasses::forEachHolder(const Apply& apply) const
         for (osg::Node* node : {s.maskBegin.get(), s.maskEnd.get(), s.volumeBegin.get(), s.volumeEnd.get()}) apply(node);
         for (osg::StateSet* ss : {s.clearState.get(), s.maskState.get(), s.volumeState.get(), s.litState.get(),
                                   s.litShadowMapState.get(), s.blendedClearState.get(), s.blendedMaskState.get(),
-                                  s.blendedVolumeState.get(), s.blendedLitState.get(), s.blendedLitShadowMapState.get()})
+                                  s.blendedVolumeState.get(), s.blendedLitState.get(), s.blendedLitShadowMapState.get(),
+                                  s.gpu.sides.get(), s.gpu.cap.get(), s.gpuBlended.sides.get(), s.gpuBlended.cap.get()})
             apply(ss);
     }
 }
@@ -703,6 +706,7 @@ void StencilShadowPasses::build(Slot& s) const
     s.blendedClearState = passState(bin + BIN_CLEAR, nullptr);
     s.blendedVolumeState = new osg::StateSet(*s.volumeState, osg::CopyOp::SHALLOW_COPY);
     s.volumes = s.hybrid ? new ShadowVolumeGroup(MASK_BIT, MASK_BIT, COUNT_BITS) : new ShadowVolumeGroup;
+    s.gpu = s.gpuBlended = GpuVolumePasses(); // made from the volume states on first use
     s.volumeCounter = new GpuCounter(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
     s.volumeBegin = s.volumeCounter->createBeginNode(bin + BIN_VOLUME_BEGIN);
     s.volumeEnd = s.volumeCounter->createEndNode(bin + BIN_VOLUME_END);
@@ -781,7 +785,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
                                const std::vector<StencilLight>& lights, const std::vector<Caster>& casters,
                                const osg::BoundingBoxd& receivers, const CullReceivers& cullReceivers)
 {
-    _zfail = _zpass = _rebuilt = _culled = 0;
+    _zfail = _zpass = _rebuilt = _culled = _gpuCasters = 0;
     _silhouettePixels = _volumeFragments = -1;
     _blockersHidden = _blockersTested = 0;
     const VolumeView view{osg::Matrixd::inverse(*cv.getModelViewMatrix()).getTrans(), nearPlaneRadius(cv), receivers};
@@ -798,11 +802,17 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         if (bin != outer->getRenderBinList().end()) detail::keepByBin(*bin->second, OUTER_BIN, false);
     };
     std::vector<StencilLight> culled; // the lights of this cull, for the blended round
+    const bool gpu = _gpu && _cullCasters && _gpu->extrudesAny(casters);
+    std::vector<Caster> marked; // every caster's volume on the GPU: none left to the CPU
+    if (gpu && _gpu->getAllCasters()) marked = _gpu->leftToCpu(casters);
+    const std::vector<Caster>& cpuCasters = marked.empty() ? casters : marked;
     for (const StencilLight& light : lights)
     {
         if (mask && int(light.slot) != maskSlot) continue;
         culled.push_back(light);
-        cullLight(cv, slotFor(light, hybrid, mask, mark), light, casters, view, opaquePass);
+        Slot& s = slotFor(light, hybrid, mask, mark);
+        cullLight(cv, s, light, cpuCasters, view, opaquePass);
+        if (gpu) cullGpuVolumes(cv, s, light, casters, false);
     }
     if (mark)
     {
@@ -815,7 +825,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
     _blendedRound = false;
     _blendedSkipped = lastLate > OUTER_BIN && mark;
     if (lastLate > OUTER_BIN && !mark)
-        cullBlended(cv, std::max(BLENDED_MIN_BIN, lastLate + 1), culled, cullReceivers);
+        cullBlended(cv, std::max(BLENDED_MIN_BIN, lastLate + 1), culled, gpu ? &casters : nullptr, cullReceivers);
 }
 
 void StencilShadowPasses::cullLight(osgUtil::CullVisitor& cv, Slot& s, const StencilLight& light,
@@ -855,8 +865,25 @@ void StencilShadowPasses::cullLight(osgUtil::CullVisitor& cv, Slot& s, const Ste
     if (s.hybrid) opaquePass(s.litShadowMapState.get());
 }
 
+void StencilShadowPasses::cullGpuVolumes(osgUtil::CullVisitor& cv, Slot& s, const StencilLight& light,
+                                         const std::vector<Caster>& casters, bool blended)
+{
+    GpuVolumePasses& passes = blended ? s.gpuBlended : s.gpu;
+    if (!passes.sides)
+        passes = _gpu->createLight(blended ? *s.blendedVolumeState : *s.volumeState, *s.volumes->getZFailState(),
+                                   *s.volumes->getLightCapState());
+    const auto culled = static_cast<unsigned int>(_gpu->cull(cv, passes, light.position, casters, _cullCasters));
+    if (!blended) _gpuCasters += culled;
+}
+
+void StencilShadowPasses::setGpuVolumes(detail::GpuVolumes* gpu, CullReceivers cullCasters)
+{
+    _gpu = gpu;
+    _cullCasters = std::move(cullCasters);
+}
+
 void StencilShadowPasses::cullBlended(osgUtil::CullVisitor& cv, int outerBin, const std::vector<StencilLight>& lights,
-                                      const CullReceivers& cullReceivers)
+                                      const std::vector<Caster>* gpuCasters, const CullReceivers& cullReceivers)
 {
     if (_blendedOuter->getBinNumber() != outerBin) _blendedOuter->setRenderBinDetails(outerBin, "RenderBin");
     cv.pushStateSet(_blendedOuter.get());
@@ -889,6 +916,7 @@ void StencilShadowPasses::cullBlended(osgUtil::CullVisitor& cv, int outerBin, co
             cv.pushStateSet(s.blendedVolumeState.get());
             s.volumes->cullAgain(cv);
             cv.popStateSet();
+            if (gpuCasters) cullGpuVolumes(cv, s, light, *gpuCasters, true);
             blendedPass(s.blendedLitState.get());
             if (s.hybrid) blendedPass(s.blendedLitShadowMapState.get());
         }

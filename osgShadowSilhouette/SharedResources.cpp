@@ -51,6 +51,22 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
         createProgram("osgShadowSilhouette shadow volumes", shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
     r->prepassProgram =
         createProgram("osgShadowSilhouette depth prepass", shader::FILE_DEPTH_VERT, shader::FILE_DEPTH_FRAG);
+    r->gpuVolumeProgram = createProgram("osgShadowSilhouette shadow volumes extruded on the GPU",
+                                        shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
+    r->gpuVolumeCapProgram = createProgram("osgShadowSilhouette light caps extruded on the GPU",
+                                           shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
+    const osg::ref_ptr<osg::Shader> extrusion = loadShader(osg::Shader::GEOMETRY, shader::FILE_GPU_VOLUME_GEOM);
+    r->gpuVolumeProgram->addShader(extrusion.get());
+    if (extrusion)
+    {
+        // A shader of its own (its source's define after the #version line), not an OSG define.
+        std::string source = extrusion->getShaderSource();
+        source.insert(source.find('\n') + 1, std::string("#define ") + shader::DEFINE_GPU_VOLUME_LIGHT_CAP + "\n");
+        osg::ref_ptr<osg::Shader> cap = new osg::Shader(osg::Shader::GEOMETRY, source);
+        cap->setName(extrusion->getName() + " (light caps)");
+        r->gpuVolumeCapProgram->addShader(cap.get());
+    }
+    r->adjacency = new AdjacencyDrawables;
     // The lighting equation in the receivers' vertex and fragment stages, one source
     // (PerPixelLighting chooses where it runs).
     const osg::ref_ptr<osg::Shader> lighting[] = {loadShader(osg::Shader::VERTEX, shader::FILE_LIGHTING),
@@ -75,7 +91,9 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
     r->distanceMapStateSet = SilhouetteMapPass::createDistanceStateSet();
     r->defaultDistanceTexture = SilhouetteMapPass::createDefaultDistanceTexture();
 
-    for (osg::Program* program : {r->volumeProgram.get(), r->prepassProgram.get()}) watchLink(program);
+    for (osg::Program* program :
+         {r->volumeProgram.get(), r->prepassProgram.get(), r->gpuVolumeProgram.get(), r->gpuVolumeCapProgram.get()})
+        watchLink(program);
     for (osg::StateSet* ss :
          {r->depthPassStateSet.get(), r->listStateSet.get(), r->silhouetteMapStateSet.get(),
           r->distanceMapStateSet.get(), dynamic_cast<osg::StateSet*>(r->silhouetteMapStateSet->getUserData())})

@@ -3,6 +3,7 @@
 #define OSGSHADOWSILHOUETTE_SHARED_RESOURCES_H
 
 #include "CasterVertexStages.h"
+#include "GpuVolumes.h"
 
 #include <osg/Program>
 #include <osg/Referenced>
@@ -24,6 +25,8 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Program> stencilProgram;  ///< the receivers in the stencil modes' eye passes
     osg::ref_ptr<osg::Program> volumeProgram;   ///< the shadow volumes' extrusion
     osg::ref_ptr<osg::Program> prepassProgram;  ///< the eye pass's depth prepass
+    osg::ref_ptr<osg::Program> gpuVolumeProgram;    ///< volumes extruded by a geometry stage (GpuVolumes)
+    osg::ref_ptr<osg::Program> gpuVolumeCapProgram; ///< ... their light caps
     osg::ref_ptr<osg::StateSet> depthPassStateSet;
     osg::ref_ptr<osg::StateSet> silhouetteMapStateSet;
     osg::ref_ptr<osg::StateSet> listStateSet;
@@ -36,6 +39,8 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Texture2D> defaultDistanceTexture;      ///< a distance map without edges
     /** The casters' own vertex stages in the light passes (a cache, itself thread safe). */
     osg::ref_ptr<CasterVertexStages> casterStages;
+    /** The casters' welded faces with adjacency, for the volumes a geometry stage extrudes. */
+    osg::ref_ptr<AdjacencyDrawables> adjacency;
 
     /** The depth texture of a slot with nothing to shadow. */
     osg::Texture2D* litTexture(bool rawDepth) const
@@ -51,8 +56,8 @@ struct SharedResources : public osg::Referenced
     template <class Op>
     void forEachGLObjectHolder(const Op& op) const
     {
-        for (osg::Program* program :
-             {receiverProgram.get(), stencilProgram.get(), volumeProgram.get(), prepassProgram.get()})
+        for (osg::Program* program : {receiverProgram.get(), stencilProgram.get(), volumeProgram.get(),
+                                      prepassProgram.get(), gpuVolumeProgram.get(), gpuVolumeCapProgram.get()})
             op(program);
         for (osg::StateSet* ss : {depthPassStateSet.get(), silhouetteMapStateSet.get(), listStateSet.get(),
                                   listFrontOnlyStateSet.get(), distanceMapStateSet.get()})
@@ -61,6 +66,7 @@ struct SharedResources : public osg::Referenced
                                         defaultNeighbourhoodTexture.get(), defaultDistanceTexture.get()})
             op(texture);
         op(casterStages.get());
+        op(adjacency.get());
     }
 };
 

@@ -71,10 +71,10 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechn
       _polygonOffsetUnits(copy._polygonOffsetUnits), _lightNum(copy._lightNum), _maxShadowLights(copy._maxShadowLights),
       _baseTextureUnit(copy._baseTextureUnit), _useDefaultShading(copy._useDefaultShading),
       _perPixelLighting(copy._perPixelLighting), _debugView(copy._debugView), _debugLight(copy._debugLight),
-      _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _hybridEdgeMask(copy._hybridEdgeMask),
-      _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _filter(copy._filter),
-      _filterWindow(copy._filterWindow), _lightSize(copy._lightSize), _softSamples(copy._softSamples),
-      _tuning(copy._tuning), _warnings(new detail::WarningLog)
+      _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _gpuExtraction(copy._gpuExtraction),
+      _hybridEdgeMask(copy._hybridEdgeMask), _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset),
+      _filter(copy._filter), _filterWindow(copy._filterWindow), _lightSize(copy._lightSize),
+      _softSamples(copy._softSamples), _tuning(copy._tuning), _warnings(new detail::WarningLog)
 {
 }
 
@@ -197,6 +197,11 @@ void SilhouetteShadowTechnique::setBlockerCulling(bool flag)
 void SilhouetteShadowTechnique::setHybridMethod(HybridMethod method)
 {
     _hybridMethod = acceptEnum("HybridMethod", method);
+}
+
+void SilhouetteShadowTechnique::setGpuExtraction(GpuExtraction extraction)
+{
+    _gpuExtraction = acceptEnum("GpuExtraction", extraction);
 }
 
 void SilhouetteShadowTechnique::setHybridEdgeMask(bool flag)

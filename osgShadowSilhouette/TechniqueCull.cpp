@@ -224,8 +224,16 @@ void TechniqueCull::prepareEyePass()
     if (_frame.stencil && !_vd.stencil)
         _vd.stencil = new StencilShadowPasses(shared.stencilProgram.get(), shared.volumeProgram.get());
     if (_frame.stencil)
+    {
         _vd.receiverPassStateSet->setAttributeAndModes(shared.stencilProgram.get(),
                                                        osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        GpuVolumes* gpu = _vd.stencil->getGpuVolumes();
+        if (!gpu)
+            gpu = new GpuVolumes(shared.gpuVolumeProgram.get(), shared.gpuVolumeCapProgram.get(),
+                                 shared.casterStages.get(), shared.adjacency.get());
+        gpu->setAllCasters(_t._gpuExtraction == SilhouetteShadowTechnique::GPU_EXTRACTION_ALL_CASTERS);
+        _vd.stencil->setGpuVolumes(gpu, [this](osg::StateSet* pass) { cullCasters(_cv, *_t._shadowedScene, pass); });
+    }
     else
         _vd.receiverPassStateSet->removeAttribute(osg::StateAttribute::PROGRAM);
     // The GLSL 4.30 shaders join the receivers' programs only where the context runs them.

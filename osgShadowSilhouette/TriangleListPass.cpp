@@ -456,18 +456,6 @@ struct TriangleIndexSink
     }
 };
 
-/** The arrays of @p geometry besides its vertices, which a stand-in shares: normals, colours,
- *  texture coordinates (the eye's passes draw stand-ins too) and the vertex attributes (a
- *  skinning program's bone weights, set after its first frames). */
-std::vector<const osg::Array*> attributeArrays(const osg::Geometry& geometry)
-{
-    std::vector<const osg::Array*> arrays{geometry.getNormalArray(), geometry.getColorArray(),
-                                          geometry.getSecondaryColorArray(), geometry.getFogCoordArray()};
-    for (const osg::ref_ptr<osg::Array>& array : geometry.getTexCoordArrayList()) arrays.push_back(array.get());
-    for (const osg::ref_ptr<osg::Array>& array : geometry.getVertexAttribArrayList()) arrays.push_back(array.get());
-    return arrays;
-}
-
 /** Whether a primitive mode draws faces that OSG's functors and GL may split differently. */
 bool splitFace(GLenum mode)
 {
@@ -509,7 +497,7 @@ osg::Drawable* ListedDrawables::faces(osg::Drawable& drawable)
     osg::Geometry* geometry = drawable.asGeometry();
     if (!geometry || geometry->getDrawCallback()) return &drawable;
     // An array bound per primitive set would pair its values with the stand-in's sets.
-    for (const osg::Array* array : attributeArrays(*geometry))
+    for (const osg::Array* array : detail::attributeArrays(*geometry))
         if (array && array->getBinding() == osg::Array::BIND_PER_PRIMITIVE_SET) return &drawable;
     bool split = false;
     for (const osg::ref_ptr<osg::PrimitiveSet>& p : geometry->getPrimitiveSetList())
@@ -551,7 +539,7 @@ bool ListedDrawables::isCurrent(const StandIn& standIn, const osg::Geometry& sou
 {
     const osg::Geometry::PrimitiveSetList& sets = source.getPrimitiveSetList();
     if (standIn.source.get() != &source || standIn.vertices != source.getVertexArray() ||
-        standIn.primitives.size() != sets.size() || standIn.attributes != attributeArrays(source))
+        standIn.primitives.size() != sets.size() || standIn.attributes != detail::attributeArrays(source))
         return false;
     for (std::size_t i = 0; i < sets.size(); ++i)
         if (standIn.primitives[i].first != sets[i].get() ||
@@ -565,22 +553,14 @@ ListedDrawables::StandIn ListedDrawables::makeStandIn(osg::Geometry& source)
     StandIn standIn;
     standIn.source = &source;
     standIn.vertices = source.getVertexArray();
-    standIn.attributes = attributeArrays(source);
+    standIn.attributes = detail::attributeArrays(source);
     osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
     geometry->setName(source.getName() + " (list pass triangles)");
     geometry->setUseDisplayList(false);
-    // As the source draws: a stand-in with buffer objects would attach them to the source's
-    // array and primitive sets, which it draws without.
-    geometry->setUseVertexBufferObjects(source.getUseVertexBufferObjects());
-    geometry->setVertexArray(source.getVertexArray());
-    // The rest of the arrays too, for a vertex stage of the caster's own (a skinning
-    // shader's bone weights: CasterVertexStages.h); shared, not copied.
-    geometry->setNormalArray(source.getNormalArray());
-    geometry->setColorArray(source.getColorArray());
-    geometry->setSecondaryColorArray(source.getSecondaryColorArray());
-    geometry->setFogCoordArray(source.getFogCoordArray());
-    geometry->setTexCoordArrayList(source.getTexCoordArrayList());
-    geometry->setVertexAttribArrayList(source.getVertexAttribArrayList());
+    // Every array, for a vertex stage of the caster's own too (a skinning shader's bone
+    // weights: CasterVertexStages.h); shared, not copied, and with buffer objects as the
+    // source draws (they would attach to its arrays and primitive sets, shared here).
+    detail::shareArrays(*geometry, source);
     osg::ref_ptr<osg::DrawElementsUInt> faces = new osg::DrawElementsUInt(GL_TRIANGLES);
     osg::TriangleIndexFunctor<TriangleIndexSink> split;
     split.out = faces.get();

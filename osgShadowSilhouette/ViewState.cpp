@@ -186,6 +186,27 @@ void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, Vi
     cv.setTraversalMask(mask);
 }
 
+void cullCasters(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, osg::StateSet* pass)
+{
+    const unsigned int mask = cv.getTraversalMask();
+    cv.setTraversalMask(mask & scene.getShadowSettings()->getCastsShadowTraversalMask());
+    const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
+    cv.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    // The culling sets below copy the projection's (CullStack::pushCullingSet()).
+    osg::CullingSet& projection = cv.getProjectionCullingStack().back();
+    osg::CullingSet& current = cv.getCurrentCullingSet();
+    const osg::CullingSet::Mask projectionMask = projection.getCullingMask(), currentMask = current.getCullingMask();
+    projection.setCullingMask(osg::CullingSet::NO_CULLING);
+    current.setCullingMask(osg::CullingSet::NO_CULLING);
+    cv.pushStateSet(pass);
+    scene.osg::Group::traverse(cv);
+    cv.popStateSet();
+    projection.setCullingMask(projectionMask);
+    current.setCullingMask(currentMask);
+    cv.setComputeNearFarMode(nearFar);
+    cv.setTraversalMask(mask);
+}
+
 void cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd,
                       const std::function<void(osg::StateSet* pass)>& cullReceivers)
 {

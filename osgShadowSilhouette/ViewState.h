@@ -62,6 +62,12 @@ void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg:
 void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
                    CasterVertexStages* stages = nullptr, ListedDrawables* faces = nullptr);
 
+/** Culls @p scene's children for the eye under the casters' traversal mask inside @p pass
+ *  alone (the view's receiver state stays out), without view-frustum or small-feature
+ *  culling (a caster outside the view shadows what is in it) and without computing near and
+ *  far (the view's planes stay those of what it sees): volumes extruded on the GPU. */
+void cullCasters(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, osg::StateSet* pass);
+
 /** Culls the depth prepass of the receivers (DepthPrepass) through @p cullReceivers under the
  *  view's prepass state, and keeps of it only what it draws exactly as the eye pass does. */
 void cullDepthPrepass(osgUtil::CullVisitor& cv, ViewData& vd,

@@ -58,7 +58,6 @@ public:
     {
         mf.frame.stencil = true;
         mf.services.warnAlphaTested(false, false);
-        mf.services.warnMovedOnGpu(mf.frame.casterList, WarningLog::CpuGeometry::Volumes);
     }
 
     void cullEyePasses(ModeFrame& mf, const std::vector<FoundLight>& lights, const std::vector<int>& slots) override

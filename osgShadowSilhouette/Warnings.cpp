@@ -131,17 +131,12 @@ void WarningLog::movedOnGpu(const std::vector<Caster>& casters, CpuGeometry mode
             names.push_back("'" + caster.geometry->getName() + "'");
     }
     if (count == 0) return;
-    const char* modeName = mode == CpuGeometry::SilhouetteEdges ? "SILHOUETTE_MAP"
-                           : mode == CpuGeometry::Volumes       ? "SHADOW_VOLUME"
-                                                                : "HYBRID (stencil volumes)";
-    OSG_WARN << "osgShadowSilhouette: " << modeName << ": " << count << (count == 1 ? " caster is" : " casters are")
+    OSG_WARN << "osgShadowSilhouette: SILHOUETTE_MAP: " << count << (count == 1 ? " caster is" : " casters are")
              << " drawn by a program whose vertex stage moves its vertices: " << listOf(names, unnamed)
-             << "; the CPU cannot know where that stage puts its triangles, so "
-             << (mode == CpuGeometry::Volumes ? "it casts no shadow volume and no shadow"
-                 : mode == CpuGeometry::StencilVolumes
-                     ? "it casts no stencil volume, and the exact test calls the pixels along its shadows' edges lit"
-                     : "it gives the silhouette map no edges: its shadows' edges are the depth map's")
-             << " (SHADOW_MAP, and HYBRID with triangle lists, run that vertex stage and cast its shape)" << std::endl;
+             << "; the CPU cannot know where that stage puts its triangles, so it gives the silhouette map no "
+                "edges: its shadows' edges are the depth map's (every other mode runs that vertex stage and casts "
+                "its shape)"
+             << std::endl;
 }
 
 } // namespace detail

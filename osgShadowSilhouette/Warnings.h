@@ -70,11 +70,10 @@ public:
      *  triangles whole. */
     void alphaTested(bool hybrid, bool lists);
     /** What the CPU's geometry of a mode does without the casters drawn by a vertex stage of
-     *  their own that moves their vertices (Caster::movedOnGpu). */
+     *  their own that moves their vertices (Caster::movedOnGpu). The shadow volumes of such
+     *  casters are extruded on the GPU (GpuVolumes.h). */
     enum class CpuGeometry
     {
-        Volumes,        ///< SHADOW_VOLUME: they cast no shadow
-        StencilVolumes, ///< HYBRID's stencil method: the pixels along their shadows' edges lit
         SilhouetteEdges ///< SILHOUETTE_MAP: the depth map's answer at their edges
     };
     /** One message per mode naming the casters of @p casters with a vertex stage of their

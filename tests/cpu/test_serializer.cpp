@@ -157,7 +157,7 @@ TEST(Serializer, EveryEnumValueOfTheHeaderHasAName)
             EXPECT_TRUE(lookup->getStringToValue().count((*it)[1].str()))
                 << serializer->getName() << "::" << (*it)[1].str() << " has no ADD_ENUM_VALUE";
     }
-    EXPECT_EQ(enums, 5); // Mode, DebugView, HybridMethod, DepthPrepass, Filter
+    EXPECT_EQ(enums, 6); // Mode, GpuExtraction, DebugView, HybridMethod, DepthPrepass, Filter
 }
 
 class RoundTrip : public ::testing::TestWithParam<std::tuple<std::string, size_t>>

@@ -222,29 +222,30 @@ INSTANTIATE_TEST_SUITE_P(
     Modes, CasterVertexStage,
     ::testing::Values(StageCase{"shadowmap", "shadowmap", SilhouetteShadowTechnique::HYBRID_AUTO},
                       StageCase{"hybrid_lists", "hybrid", SilhouetteShadowTechnique::HYBRID_TRIANGLE_LISTS},
+                      StageCase{"hybrid_stencil", "hybrid", SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES},
+                      StageCase{"volume", "volume", SilhouetteShadowTechnique::HYBRID_AUTO},
                       StageCase{"silhouette", "silhouette", SilhouetteShadowTechnique::HYBRID_AUTO}),
     [](const auto& info) { return std::string(info.param.name); });
 
-// The shadow volumes are built on the CPU from the vertex array, which does not hold where
-// such a caster is drawn: SHADOW_VOLUME and HYBRID's stencil method leave these casters out
-// and say so once, naming them. (Measured: SHADOW_VOLUME then shadows nothing of theirs,
-// 18.2% and 48.9% of the view wrong; the stencil method calls the pixels along their
-// shadows' edges lit, 0.14% and 0.26%.)
-TEST(CasterVertexStageWarnings, TheVolumeModesNameTheCastersTheyLeaveOut)
+// The shadow volumes of these casters are extruded on the GPU (GpuVolumes.h), behind their
+// own vertex stages: the volume modes cast them (the test above) and name none of them. Only
+// SILHOUETTE_MAP, whose edges the CPU extracts, says that it leaves them out. (Measured
+// before the GPU's volumes: SHADOW_VOLUME shadowed nothing of theirs, 18.2% and 48.9% of the
+// view wrong; the stencil method called the pixels along their shadows' edges lit, 0.14% and
+// 0.26%.)
+TEST(CasterVertexStageWarnings, OnlySilhouetteMapNamesTheCastersItLeavesOut)
 {
-    for (const bool hybrid : {false, true})
+    for (const char* mode : {"volume", "hybrid", "silhouette"})
     {
         osstest::NotifyCapture capture;
-        ShadowedRender r(scene(true), hybrid ? "hybrid" : "volume", 1024, 320, 240);
+        ShadowedRender r(scene(true), mode, 1024, 320, 240);
         ASSERT_TRUE(r.valid());
         r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
         r.mask(0, 3);
         r.mask(1, 2);
-        const std::string mode = hybrid ? "HYBRID (stencil volumes)" : "SHADOW_VOLUME";
-        EXPECT_EQ(capture.count("osgShadowSilhouette: " + mode +
-                                ": 2 casters are drawn by a program whose vertex "
-                                "stage moves its vertices: 'bent sphere', 'lifted plate'"),
-                  1)
-            << capture.warnings();
+        EXPECT_EQ(capture.count("casters are drawn by a program whose vertex stage moves its vertices: 'bent sphere', "
+                                "'lifted plate'"),
+                  std::string(mode) == "silhouette" ? 1 : 0)
+            << mode << ": " << capture.warnings();
     }
 }
