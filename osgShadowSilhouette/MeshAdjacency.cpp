@@ -18,11 +18,17 @@
 #include <sstream>
 #include <unordered_map>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace osgShadowSilhouette {
 
 namespace {
 
 const std::uint32_t kInvalid = std::numeric_limits<std::uint32_t>::max();
+/** Interleaved sums per part of a closed mesh's signed volume (computePlanes()). */
+constexpr std::size_t kLanes = 4;
 
 struct IndexCollector
 {
@@ -265,18 +271,6 @@ osg::Vec4d facePlane(const osg::Vec3d& a, const osg::Vec3d& b, const osg::Vec3d&
     return osg::Vec4d(n, -(n * a));
 }
 
-/** The planes of the faces, from the float positions the renderer draws, in double. */
-void computePlanes(MeshAdjacency& adjacency)
-{
-    adjacency.planes.resize(adjacency.faces.size());
-    const osg::Vec3f* p = adjacency.positions.data();
-    for (std::size_t f = 0; f < adjacency.faces.size(); ++f)
-    {
-        const MeshTriangle& tri = adjacency.faces[f];
-        adjacency.planes[f] = facePlane(p[tri.v[0]], p[tri.v[1]], p[tri.v[2]]);
-    }
-}
-
 void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
 {
     adjacency.positions.resize(mesh.n_vertices());
@@ -292,7 +286,6 @@ void flattenFaces(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
         int k = 0;
         for (auto v : mesh.fv_range(f)) tri.v[k++] = static_cast<std::uint32_t>(v.idx());
     }
-    computePlanes(adjacency);
 }
 
 void flattenEdges(const HalfEdgeMesh& mesh, MeshAdjacency& adjacency)
@@ -347,27 +340,137 @@ std::vector<std::uint32_t> connectedParts(const MeshAdjacency& m)
     return part;
 }
 
-/** Parts (connectedParts()) whose signed enclosed volume is negative. Six times a part's
- *  volume is the sum over its faces of n . (a - o), n the face's plane normal, a its first
- *  vertex and o the first vertex of the part's first face, in double; the faces go to four
- *  interleaved sums per part, so that the additions do not wait for each other. */
-std::size_t countInwardParts(const MeshAdjacency& m, const std::vector<std::uint32_t>& partOf)
+/** The runs of consecutive faces of one part in @p partOf (connectedParts()). */
+std::vector<PartRun> partRuns(const std::vector<std::uint32_t>& partOf)
 {
-    constexpr std::size_t kLanes = 4;
+    std::vector<PartRun> runs;
+    for (std::uint32_t f = 0; f < partOf.size(); ++f)
+    {
+        if (runs.empty() || runs.back().part != partOf[f]) runs.push_back(PartRun{f, f, partOf[f]});
+        runs.back().end = f + 1;
+    }
+    return runs;
+}
+
+/** The planes of faces [first, end) (facePlane(), from the float positions the renderer
+ *  draws, in double); with @p lanes, each face's n . (a - @p origin), n its plane's normal and
+ *  a its first vertex, added to lanes[f % kLanes]. */
+template <bool kVolumes>
+void computeRunPlanes(MeshAdjacency& m, std::uint32_t first, std::uint32_t end, const osg::Vec3d& origin, double* lanes)
+{
+    const osg::Vec3f* p = m.positions.data();
+    const MeshTriangle* faces = m.faces.data();
+    osg::Vec4d* planes = m.planes.data();
+    for (std::uint32_t f = first; f < end; ++f)
+    {
+        const MeshTriangle& tri = faces[f];
+        const osg::Vec3d a(p[tri.v[0]]);
+        const osg::Vec4d n = facePlane(a, osg::Vec3d(p[tri.v[1]]), osg::Vec3d(p[tri.v[2]]));
+        planes[f] = n;
+        if constexpr (kVolumes)
+        {
+            const osg::Vec3d d = a - origin;
+            lanes[f % kLanes] += n.x() * d.x() + n.y() * d.y() + n.z() * d.z();
+        }
+    }
+}
+
+#if defined(__SSE2__)
+/** A corner of two faces f, f + 1 in double, each coordinate as the pair (face f, face f + 1). */
+struct CornerPair
+{
+    __m128d x, y, z;
+};
+
+inline CornerPair cornerPair(const osg::Vec3f& p, const osg::Vec3f& q)
+{
+    return CornerPair{_mm_set_pd(q.x(), p.x()), _mm_set_pd(q.y(), p.y()), _mm_set_pd(q.z(), p.z())};
+}
+
+/** computeRunPlanes() for faces f and f + 1 at once, the same operations in the same order in
+ *  SSE2's two lanes; returns the pair of their n . (a - origin). */
+inline __m128d planePair(const MeshAdjacency& m, std::uint32_t f, const CornerPair& origin, osg::Vec4d* planes)
+{
+    const osg::Vec3f* p = m.positions.data();
+    const MeshTriangle& s = m.faces[f];
+    const MeshTriangle& t = m.faces[f + 1];
+    const CornerPair a = cornerPair(p[s.v[0]], p[t.v[0]]), b = cornerPair(p[s.v[1]], p[t.v[1]]),
+                     c = cornerPair(p[s.v[2]], p[t.v[2]]);
+    const __m128d ux = _mm_sub_pd(b.x, a.x), uy = _mm_sub_pd(b.y, a.y), uz = _mm_sub_pd(b.z, a.z);
+    const __m128d vx = _mm_sub_pd(c.x, a.x), vy = _mm_sub_pd(c.y, a.y), vz = _mm_sub_pd(c.z, a.z);
+    const __m128d nx = _mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy));
+    const __m128d ny = _mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz));
+    const __m128d nz = _mm_sub_pd(_mm_mul_pd(ux, vy), _mm_mul_pd(uy, vx));
+    const __m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, a.x), _mm_mul_pd(ny, a.y)), _mm_mul_pd(nz, a.z));
+    const __m128d w = _mm_xor_pd(dot, _mm_set1_pd(-0.0)); // -(n . a), as the scalar negation
+    double* out = planes[f].ptr();
+    _mm_storeu_pd(out, _mm_unpacklo_pd(nx, ny));
+    _mm_storeu_pd(out + 2, _mm_unpacklo_pd(nz, w));
+    _mm_storeu_pd(out + 4, _mm_unpackhi_pd(nx, ny));
+    _mm_storeu_pd(out + 6, _mm_unpackhi_pd(nz, w));
+    const __m128d dx = _mm_sub_pd(a.x, origin.x), dy = _mm_sub_pd(a.y, origin.y), dz = _mm_sub_pd(a.z, origin.z);
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, dx), _mm_mul_pd(ny, dy)), _mm_mul_pd(nz, dz));
+}
+
+/** computeRunPlanes() four faces a step: faces up to a multiple of four and the last ones
+ *  one by one, the others in pairs whose sums go to lanes (0, 1) and (2, 3). */
+template <bool kVolumes>
+void computeRunPlanesSse2(MeshAdjacency& m, std::uint32_t first, std::uint32_t end, const osg::Vec3d& origin,
+                          double* lanes)
+{
+    const std::uint32_t head = std::min(end, (first + 3) / 4 * 4);
+    computeRunPlanes<kVolumes>(m, first, head, origin, lanes);
+    const CornerPair o{_mm_set1_pd(origin.x()), _mm_set1_pd(origin.y()), _mm_set1_pd(origin.z())};
+    __m128d low = kVolumes ? _mm_loadu_pd(lanes) : _mm_setzero_pd();
+    __m128d high = kVolumes ? _mm_loadu_pd(lanes + 2) : _mm_setzero_pd();
+    std::uint32_t f = head;
+    for (; f + 4 <= end; f += 4)
+    {
+        const __m128d first2 = planePair(m, f, o, m.planes.data());
+        const __m128d second2 = planePair(m, f + 2, o, m.planes.data());
+        if constexpr (kVolumes) low = _mm_add_pd(low, first2), high = _mm_add_pd(high, second2);
+    }
+    if constexpr (kVolumes) _mm_storeu_pd(lanes, low), _mm_storeu_pd(lanes + 2, high);
+    computeRunPlanes<kVolumes>(m, f, end, origin, lanes);
+}
+#endif
+
+/** computeRunPlanes(), in SSE2 where the compiler targets it. */
+template <bool kVolumes>
+void computeRunPlanesFast(MeshAdjacency& m, std::uint32_t first, std::uint32_t end, const osg::Vec3d& origin,
+                          double* lanes)
+{
+#if defined(__SSE2__)
+    computeRunPlanesSse2<kVolumes>(m, first, end, origin, lanes);
+#else
+    computeRunPlanes<kVolumes>(m, first, end, origin, lanes);
+#endif
+}
+
+/** Computes the planes of the faces and, given the part runs of a closed mesh (partRuns()),
+ *  returns the number of parts whose signed enclosed volume is negative (0 without runs).
+ *  Six times a part's volume is the sum over its faces of n . (a - o), n the face's plane
+ *  normal, a its first vertex and o the first vertex of the part's first face, in double;
+ *  the faces go to kLanes interleaved sums per part (by face index), so that the additions
+ *  do not wait for each other. One pass over the faces for both. */
+std::size_t computePlanes(MeshAdjacency& m, const std::vector<PartRun>& runs)
+{
+    m.planes.resize(m.faces.size());
+    if (runs.empty())
+    {
+        computeRunPlanesFast<false>(m, 0, std::uint32_t(m.faces.size()), osg::Vec3d(), nullptr);
+        return 0;
+    }
     std::vector<double> volume; // kLanes sums per part
     std::vector<osg::Vec3d> origin;
-    for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (const PartRun& run : runs)
     {
-        const std::uint32_t r = partOf[f];
-        const osg::Vec3d a(m.positions[m.faces[f].v[0]]);
-        if (r == origin.size()) // the part's first face
+        if (run.part == origin.size()) // the part's first face
         {
-            origin.push_back(a);
+            origin.emplace_back(m.positions[m.faces[run.first].v[0]]);
             volume.resize(volume.size() + kLanes, 0.0);
         }
-        const osg::Vec4d& n = m.planes[f];
-        const osg::Vec3d d = a - origin[r];
-        volume[r * kLanes + f % kLanes] += n.x() * d.x() + n.y() * d.y() + n.z() * d.z();
+        computeRunPlanesFast<true>(m, run.first, run.end, origin[run.part], &volume[run.part * kLanes]);
     }
     std::size_t inward = 0;
     for (std::size_t r = 0; r < origin.size(); ++r)
@@ -380,8 +483,8 @@ std::size_t countInwardParts(const MeshAdjacency& m, const std::vector<std::uint
 
 /** Fills @p welding from the welded soup and the triangles OpenMesh refused (whose vertex
  *  copies follow the welded vertices, three per refused triangle). */
-void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& refused,
-                     std::vector<std::uint32_t> parts, double tolerance, MeshWelding& welding)
+void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& refused, std::vector<PartRun> runs,
+                     double tolerance, MeshWelding& welding)
 {
     welding.weldedOf = welded.weldedOf;
     welding.sourceOf.assign(welded.positions.size(), kInvalid);
@@ -393,7 +496,7 @@ void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& r
     }
     for (std::size_t t : refused)
         for (int k = 0; k < 3; ++k) welding.sourceOf.push_back(welding.sourceOf[welded.indices[t + k]]);
-    welding.partOf = std::move(parts);
+    welding.partRuns = std::move(runs);
     welding.weldTolerance = tolerance;
 }
 
@@ -402,6 +505,7 @@ void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& r
 template <class ArrayT>
 bool finiteBounds(const ArrayT& array, const MeshWelding& welding, osg::BoundingBoxd& box)
 {
+    osg::Vec3d low = box._min, high = box._max; // grown as expandBy() does, without its branches
     for (std::size_t i = 0; i < welding.weldedOf.size(); ++i)
     {
         const std::uint32_t w = welding.weldedOf[i];
@@ -409,8 +513,11 @@ bool finiteBounds(const ArrayT& array, const MeshWelding& welding, osg::Bounding
         const osg::Vec3d p = toVec3d(array[i]);
         const bool finite = isFinite(p);
         if (finite != (w != MeshWelding::kNonFinite)) return false;
-        if (finite) box.expandBy(p);
+        if (finite)
+            for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], p[k]), high[k] = std::max(high[k], p[k]);
     }
+    box._min = low;
+    box._max = high;
     return true;
 }
 
@@ -520,14 +627,14 @@ void buildMeshAdjacency(const TriangleSoup& soup, const MeshBuildOptions& option
     const std::vector<std::size_t> refused = fillHalfEdgeMesh(welded, mesh, report);
     flattenFaces(mesh, adjacency);
     flattenEdges(mesh, adjacency);
-    std::vector<std::uint32_t> parts;
-    if (adjacency.isClosed()) parts = connectedParts(adjacency);
-    if (adjacency.isClosed()) adjacency.inwardParts = countInwardParts(adjacency, parts);
+    std::vector<PartRun> runs;
+    if (adjacency.isClosed()) runs = partRuns(connectedParts(adjacency));
+    adjacency.inwardParts = computePlanes(adjacency, runs);
     std::size_t firstRefused = mesh.n_faces() - report.nonManifoldFaces;
     for (std::size_t f = firstRefused; f < mesh.n_faces(); ++f)
         adjacency.nonManifoldFaces.push_back(static_cast<std::uint32_t>(f));
     warnAboutInput(name, report);
-    if (welding) describeWelding(welded, refused, std::move(parts), tolerance, *welding);
+    if (welding) describeWelding(welded, refused, std::move(runs), tolerance, *welding);
 }
 
 void buildMeshAdjacency(const osg::Geometry& geometry, const MeshBuildOptions& options, MeshAdjacency& adjacency,
@@ -546,8 +653,7 @@ bool refreshMeshPositions(const osg::Geometry& geometry, const MeshWelding& weld
     const bool readable = visitPositions(
         geometry.getVertexArray(), [&](const auto& array) { held = refreshPositions(array, welding, refreshed); });
     if (!readable || !held) return false;
-    computePlanes(refreshed);
-    if (!welding.partOf.empty()) refreshed.inwardParts = countInwardParts(refreshed, welding.partOf);
+    refreshed.inwardParts = computePlanes(refreshed, welding.partRuns);
     return true;
 }
 }

@@ -7,9 +7,12 @@
 #include <osgShadowSilhouette/HalfEdgeMesh>
 
 #include <OpenThreads/ScopedLock>
+#include <osg/Math>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace osgShadowSilhouette {
 
@@ -149,20 +152,32 @@ bool MeshCache::getKeepHalfEdgeMesh() const
 
 namespace {
 
+/** Whether none of @p count values is Inf or NaN (an exponent of all ones), read as their bits
+ *  so that the loop has no branch and vectorises. */
+template <typename Float, typename Bits, Bits kExponent>
+bool allFinite(const Float* values, std::size_t count)
+{
+    static_assert(sizeof(Float) == sizeof(Bits), "bits of the same size");
+    Bits notFinite = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        Bits bits;
+        std::memcpy(&bits, values + i, sizeof bits);
+        notFinite |= (bits & kExponent) == kExponent;
+    }
+    return notFinite == 0;
+}
+
 /** Whether every float or double component of @p array is finite (other types: true). */
 bool allComponentsFinite(const osg::Array& array)
 {
     const std::size_t bytes = array.getTotalDataSize();
     if (array.getDataType() == GL_FLOAT)
-    {
-        const float* f = static_cast<const float*>(array.getDataPointer());
-        return std::all_of(f, f + bytes / sizeof(float), [](float x) { return std::isfinite(x); });
-    }
+        return allFinite<float, std::uint32_t, 0x7f800000u>(static_cast<const float*>(array.getDataPointer()),
+                                                            bytes / sizeof(float));
     if (array.getDataType() == GL_DOUBLE)
-    {
-        const double* d = static_cast<const double*>(array.getDataPointer());
-        return std::all_of(d, d + bytes / sizeof(double), [](double x) { return std::isfinite(x); });
-    }
+        return allFinite<double, std::uint64_t, 0x7ff0000000000000u>(static_cast<const double*>(array.getDataPointer()),
+                                                                     bytes / sizeof(double));
     return true;
 }
 
@@ -171,38 +186,76 @@ bool allComponentsFinite(const osg::Array& array)
 namespace {
 
 /** Whether the points lie in one plane within 1e-6 of their extent; if so, three of them
- *  spanning it. */
+ *  spanning it. If not because a point lies off the plane of three, the indices of the four
+ *  go to @p witness. */
 template <typename Vec>
-bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& spanning)
+bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& spanning,
+                   std::optional<MeshCache::NotFlat>& witness)
 {
     if (points.size() < 3) return false;
     const osg::Vec3d p0(points.front());
     osg::Vec3d p1 = p0;
+    std::uint32_t i1 = 0, i2 = 0;
     double farthest = 0.0; // squared distances and areas: no square root per point
-    for (const Vec& v : points)
+    for (std::uint32_t i = 0; i < points.size(); ++i)
     {
-        const double distance = (osg::Vec3d(v) - p0).length2();
-        if (distance > farthest) farthest = distance, p1 = osg::Vec3d(v);
+        const double distance = (osg::Vec3d(points[i]) - p0).length2();
+        if (distance > farthest) farthest = distance, p1 = osg::Vec3d(points[i]), i1 = i;
     }
     const osg::Vec3d axis = p1 - p0;
     const double extent = axis.length();
     if (!(extent > 0.0)) return false;
     osg::Vec3d p2 = p0;
     double best = 0.0;
-    for (const Vec& v : points)
+    for (std::uint32_t i = 0; i < points.size(); ++i)
     {
-        const double area = ((osg::Vec3d(v) - p0) ^ axis).length2();
-        if (area > best) best = area, p2 = osg::Vec3d(v);
+        const double area = ((osg::Vec3d(points[i]) - p0) ^ axis).length2();
+        if (area > best) best = area, p2 = osg::Vec3d(points[i]), i2 = i;
     }
     osg::Vec3d normal = axis ^ (p2 - p0);
     // Collinear, or nearly: no plane of their own (a segment casts no shadow, but say no).
     if (!(normal.length() > 1e-12 * extent * extent)) return false;
     normal.normalize();
     const double tolerance = 1e-6 * extent;
-    for (const Vec& v : points)
-        if (std::abs((osg::Vec3d(v) - p0) * normal) > tolerance) return false;
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        if (std::abs((osg::Vec3d(points[i]) - p0) * normal) > tolerance)
+        {
+            witness = MeshCache::NotFlat{0, i1, i2, i};
+            return false;
+        }
     spanning = {p0, p1, p2};
     return true;
+}
+
+/** Whether the four points @p witness names (a witness of spanningPlane()) prove that no plane
+ *  holds all @p points within spanningPlane()'s tolerance, so that it would say no. If one did,
+ *  every point would lie in a slab of width 2e-6 times the extent, which is at most the
+ *  diagonal D of the points' box, and a tetrahedron in a slab of width w has a volume of at
+ *  most w times the area of a plane figure of diameter D, pi D^2 / 4: six times its volume at
+ *  most 3 pi 1e-6 D^3. The bound is taken twice over, far above any rounding. */
+template <typename Vec>
+bool provesNotFlat(const std::vector<Vec>& points, const MeshCache::NotFlat& witness)
+{
+    for (std::uint32_t i : witness)
+        if (i >= points.size()) return false;
+    Vec low = points.front(), high = points.front();
+    for (const Vec& v : points)
+        for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], v[k]), high[k] = std::max(high[k], v[k]);
+    const double diagonal = (osg::Vec3d(high) - osg::Vec3d(low)).length();
+    const osg::Vec3d a(points[witness[0]]), b(points[witness[1]]), c(points[witness[2]]), d(points[witness[3]]);
+    const double sixVolume = std::abs(((b - a) ^ (c - a)) * (d - a));
+    return sixVolume > 2.0 * 3.0 * osg::PI * 1e-6 * diagonal * diagonal * diagonal;
+}
+
+/** spanningPlane(), answered no at once while @p witness, the four points that showed the last
+ *  set of points of the geometry not flat, still proves it (provesNotFlat()). */
+template <typename Vec>
+bool spanningPlaneOrWitness(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& spanning,
+                            std::optional<MeshCache::NotFlat>& witness)
+{
+    if (witness && provesNotFlat(points, *witness)) return false;
+    witness.reset();
+    return spanningPlane(points, spanning, witness);
 }
 
 } // namespace
@@ -210,12 +263,17 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
 MeshCache::FiniteEntry MeshCache::vertexFacts(const osg::Geometry& geometry)
 {
     const osg::Array* vertices = geometry.getVertexArray();
+    std::optional<NotFlat> witness; // the geometry's last one, if any
     {
         Lock lock(_mutex);
         auto it = _finite.find(&geometry);
-        if (it != _finite.end() && it->second.geometry.get() == &geometry && it->second.vertices == vertices &&
-            it->second.verticesModified == (vertices ? vertices->getModifiedCount() : 0u))
-            return it->second;
+        if (it != _finite.end() && it->second.geometry.get() == &geometry)
+        {
+            if (it->second.vertices == vertices &&
+                it->second.verticesModified == (vertices ? vertices->getModifiedCount() : 0u))
+                return it->second;
+            witness = it->second.notFlat;
+        }
     }
     FiniteEntry entry; // outside the lock
     entry.geometry = &geometry;
@@ -225,9 +283,10 @@ MeshCache::FiniteEntry MeshCache::vertexFacts(const osg::Geometry& geometry)
     if (entry.finite && vertices)
     {
         if (const auto* v3 = dynamic_cast<const osg::Vec3Array*>(vertices))
-            entry.flat = spanningPlane(v3->asVector(), entry.spanning);
+            entry.flat = spanningPlaneOrWitness(v3->asVector(), entry.spanning, witness);
         else if (const auto* v3d = dynamic_cast<const osg::Vec3dArray*>(vertices))
-            entry.flat = spanningPlane(v3d->asVector(), entry.spanning);
+            entry.flat = spanningPlaneOrWitness(v3d->asVector(), entry.spanning, witness);
+        entry.notFlat = witness;
     }
     Lock lock(_mutex);
     _finite[&geometry] = entry;

@@ -80,27 +80,36 @@ osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawEl
     return g;
 }
 
-/** The volume's vertices about @p origin: the finite ones (w = 1) less @p origin, in double,
- *  those at infinity (w = 0, directions) as they are. */
-osg::ref_ptr<osg::Vec4Array> verticesAbout(const ShadowVolume& volume, const osg::Vec3d& origin)
+/** Writes into @p out the volume's @p vertices about @p origin: the finite ones (w = 1) less
+ *  @p origin, in double, those at infinity (w = 0, directions) as they are. */
+void verticesAbout(const osg::Vec4Array& vertices, const osg::Vec3d& origin, osg::Vec4Array& out)
 {
-    osg::ref_ptr<osg::Vec4Array> out = new osg::Vec4Array(volume.vertices.size());
-    for (std::size_t i = 0; i < volume.vertices.size(); ++i)
+    out.resize(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
     {
-        const osg::Vec4f& v = volume.vertices[i];
+        const osg::Vec4f& v = vertices[i];
         if (v.w() == 0.0f)
-            (*out)[i] = v;
+            out[i] = v;
         else
-            (*out)[i].set(float(double(v.x()) - origin.x()), float(double(v.y()) - origin.y()),
-                          float(double(v.z()) - origin.z()), 1.0f);
+            out[i].set(float(double(v.x()) - origin.x()), float(double(v.y()) - origin.y()),
+                       float(double(v.z()) - origin.z()), 1.0f);
     }
-    return out;
+    out.dirty();
 }
 
-osg::ref_ptr<osg::DrawElementsUInt> drawRange(const ShadowVolume& volume, const IndexRange& range)
+/** Refills @p out with the indices of @p ranges of @p volume, one after the other. */
+void assignRanges(const ShadowVolume& volume, std::initializer_list<IndexRange> ranges, osg::DrawElementsUInt& out)
 {
-    const auto first = volume.indices.begin() + range.first;
-    return new osg::DrawElementsUInt(GL_TRIANGLES, first, first + range.count);
+    std::size_t count = 0;
+    for (const IndexRange& range : ranges) count += range.count;
+    out.clear(); // keeps its capacity
+    out.reserve(count);
+    for (const IndexRange& range : ranges)
+    {
+        const auto first = volume.indices.begin() + range.first;
+        out.insert(out.end(), first, first + range.count);
+    }
+    out.dirty();
 }
 
 /** The light cap lies on its caster's faces, which the eye pass has drawn already, but
@@ -312,16 +321,13 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     const osg::BoundingBox box = e.caster.geometry->getBoundingBox();
     const bool farOrigin = box.valid() && box.center().length() > FAR_ORIGIN_RADII * box.radius();
     const osg::Vec3d origin(farOrigin ? box.center() : osg::Vec3());
-    osg::ref_ptr<osg::Vec4Array> vertices = new osg::Vec4Array(e.volume.vertices.begin(), e.volume.vertices.end());
-    osg::ref_ptr<osg::Vec4Array> centred = verticesAbout(e.volume, origin);
+    fillArrays(e, origin);
+    osg::Vec4Array* centred = origin != osg::Vec3d() ? e.centred.get() : e.vertices.get(); // about 0: the same
     const osg::BoundingBox centredBox(box._min - osg::Vec3(origin), box._max - osg::Vec3(origin));
-    osg::ref_ptr<osg::DrawElementsUInt> sidesAndDarkCap = drawRange(e.volume, e.volume.sides);
-    osg::ref_ptr<osg::DrawElementsUInt> darkCap = drawRange(e.volume, e.volume.darkCap);
-    sidesAndDarkCap->insert(sidesAndDarkCap->end(), darkCap->begin(), darkCap->end()); // one draw, not two
-    e.zfail = volumeGeometry(centred.get(), sidesAndDarkCap.get(), centredBox);
+    e.zfail = volumeGeometry(centred, e.sidesAndDarkCap.get(), centredBox);
     e.lightCaps.clear();
     const auto addCap = [&](osg::DrawElementsUInt* indices, osg::StateSet* state) {
-        e.lightCaps.push_back(volumeGeometry(vertices.get(), indices, box));
+        e.lightCaps.push_back(volumeGeometry(e.vertices.get(), indices, box));
         e.lightCaps.back()->setStateSet(state);
     };
     // A mirroring matrix turns the volume inside out in the window: its counts would be
@@ -336,7 +342,10 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     const unsigned char culled =
         mirrored && e.caster.culledWindings != both ? e.caster.culledWindings ^ both : e.caster.culledWindings;
     if (!culled)
-        addCap(drawRange(e.volume, e.volume.lightCap).get(), _lightCapState.get());
+    {
+        assignRanges(e.volume, {e.volume.lightCap}, *e.lightCap);
+        addCap(e.lightCap.get(), _lightCapState.get());
+    }
     else
     {
         osg::ref_ptr<osg::DrawElementsUInt> kept = new osg::DrawElementsUInt(GL_TRIANGLES),
@@ -353,7 +362,7 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
             addCap(part, seenCulled == both ? nullptr : _capCullStates[0][ccw ? 1 : 0].get()); // keeps only them
         }
     }
-    e.zpass = volumeGeometry(centred.get(), drawRange(e.volume, e.volume.sides).get(), centredBox);
+    e.zpass = volumeGeometry(centred, e.sides.get(), centredBox);
     assembleSwitch(e, origin);
     e.transform->setMatrix(e.caster.world);
 
@@ -363,6 +372,28 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
                                    osg::Vec3d(e.caster.world(1, 0), e.caster.world(1, 1), e.caster.world(1, 2)).length(),
                                    osg::Vec3d(e.caster.world(2, 0), e.caster.world(2, 1), e.caster.world(2, 2)).length()});
     e.worldBound.radius() = local.radius() * scale;
+}
+
+void ShadowVolumeGroup::fillArrays(Entry& e, const osg::Vec3d& origin)
+{
+    if (!e.vertices)
+    {
+        e.vertices = new osg::Vec4Array;
+        e.sidesAndDarkCap = new osg::DrawElementsUInt(GL_TRIANGLES);
+        e.sides = new osg::DrawElementsUInt(GL_TRIANGLES);
+        e.lightCap = new osg::DrawElementsUInt(GL_TRIANGLES);
+    }
+    // The volume's vertices go to the drawn array without a copy; the array's previous ones
+    // come back to the volume, whose next build overwrites them in place.
+    e.vertices->asVector().swap(e.volume.vertices);
+    e.vertices->dirty();
+    if (origin != osg::Vec3d())
+    {
+        if (!e.centred) e.centred = new osg::Vec4Array;
+        verticesAbout(*e.vertices, origin, *e.centred);
+    }
+    assignRanges(e.volume, {e.volume.sides, e.volume.darkCap}, *e.sidesAndDarkCap); // one draw, not two
+    assignRanges(e.volume, {e.volume.sides}, *e.sides);
 }
 
 unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const osg::Vec4d& light)

@@ -231,6 +231,25 @@ TEST_P(Topology, PlanesContainTheirVerticesAndMatchOpenMeshNormals)
     }
 }
 
+// The planes are computed several faces at a time: each one is still, to the last bit, the
+// cross product in double of its float corners and the plane's offset through its first one.
+void expectExactPlanes(const MeshAdjacency& m)
+{
+    ASSERT_EQ(m.planes.size(), m.faces.size());
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+    {
+        const osg::Vec3d a(m.positions[m.faces[f].v[0]]), b(m.positions[m.faces[f].v[1]]),
+            c(m.positions[m.faces[f].v[2]]);
+        const osg::Vec3d n = (b - a) ^ (c - a);
+        EXPECT_EQ(m.planes[f], osg::Vec4d(n, -(n * a))) << "face " << f;
+    }
+}
+
+TEST_P(Topology, PlanesAreExactCrossProductsOfTheFloatPositions)
+{
+    expectExactPlanes(adjacencyOf(*GetParam().geometry()));
+}
+
 INSTANTIATE_TEST_SUITE_P(Closed, Topology, ::testing::ValuesIn(kEulerCases),
                          [](const ::testing::TestParamInfo<EulerCase>& info) { return info.param.name; });
 
@@ -381,6 +400,24 @@ TEST(BadInput, OutOfRangeIndicesAndMissingVerticesAreHarmless)
     EXPECT_TRUE(none.isClosed());
 }
 
+// Planes and the parts' volumes are computed several faces at a time along runs of faces of
+// one part: runs starting and ending anywhere give the face-by-face results.
+TEST(MeshAdjacency, PlanesAndPartsOfRunsAtAnyOffset)
+{
+    using namespace souptest;
+    const std::vector<Triangle> a = box({-2, -2, -2}, {-1, -1, -1});
+    const std::vector<Triangle> b = flipped(box({1, 1, 1}, {2, 2, 2}));
+    std::vector<Triangle> soup(a.begin() + 2, a.end()); // runs of 10, 12 and 2 faces
+    soup.insert(soup.end(), b.begin(), b.end());
+    soup.insert(soup.end(), a.begin(), a.begin() + 2);
+    const MeshAdjacency m = adjacencyOf(*soupGeometry(soup, "runs"));
+    EXPECT_TRUE(m.isClosed());
+    EXPECT_EQ(1u, m.inwardParts);
+    expectExactPlanes(m);
+    const MeshAdjacency open = adjacencyOf(*soupGeometry(box({-1, -1, -1}, {1, 1, 1}, 1), "open"));
+    EXPECT_EQ(10u, open.faces.size());
+    expectExactPlanes(open);
+}
 
 // A closed part wound inward (a room seen from within) must not cast with the classic rule.
 TEST(MeshAdjacency, CountsClosedPartsWoundInward)

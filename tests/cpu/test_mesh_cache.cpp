@@ -167,6 +167,21 @@ TEST(MeshCache, PlaneOfFlatGeometries)
     (*v)[4].z() = 0.0f;
     v->dirty();
     EXPECT_TRUE(cache->getPlane(*g, spanning));
+    // The four vertices that showed the last version not flat are tried first; the answer is
+    // the full test's whether they still show it or another vertex does.
+    (*v)[4].z() = 0.01f;
+    v->dirty();
+    EXPECT_FALSE(cache->getPlane(*g, spanning));
+    (*v)[4].z() = 0.02f;
+    v->dirty();
+    EXPECT_FALSE(cache->getPlane(*g, spanning)) << "the same vertex farther off";
+    (*v)[4].z() = 0.0f;
+    (*v)[3].z() = 3.01f;
+    v->dirty();
+    EXPECT_FALSE(cache->getPlane(*g, spanning)) << "another vertex off the plane";
+    (*v)[3].z() = 3.0f;
+    v->dirty();
+    EXPECT_TRUE(cache->getPlane(*g, spanning)) << "flat again";
 
     EXPECT_FALSE(cache->getPlane(*cube(), spanning));
     osg::ref_ptr<osg::Geometry> line = new osg::Geometry;
