@@ -99,6 +99,7 @@ struct BlendedCase
     const char* mode;
     bool point;
     bool stencil = false; ///< HYBRID by its stencil volumes
+    bool gpu = false;     ///< every volume extruded on the GPU (GPU_EXTRACTION_ALL_CASTERS)
 };
 
 class BlendedReceivers : public ::testing::TestWithParam<BlendedCase>
@@ -113,6 +114,7 @@ TEST_P(BlendedReceivers, ShadowedAsTheReferenceShadowsThem)
     ShadowedRender r(blendedScene(c.point, false), c.mode, 2048, 512, 384);
     ASSERT_TRUE(r.valid());
     if (c.stencil) r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+    if (c.gpu) r.technique->setGpuExtraction(SilhouetteShadowTechnique::GPU_EXTRACTION_ALL_CASTERS);
     const ossref::Comparison score = r.scoreMask(0, 3);
     ASSERT_TRUE(score.valid) << score.error;
     std::cout << c.name << ": wrong_pct " << score.wrongPct << " (" << score.wrongPixels << " pixels of "
@@ -126,10 +128,15 @@ TEST_P(BlendedReceivers, ShadowedAsTheReferenceShadowsThem)
 
 INSTANTIATE_TEST_SUITE_P(
     Modes, BlendedReceivers,
-    ::testing::Values(BlendedCase{"shadowmap_sun", "shadowmap", false}, BlendedCase{"silhouette_sun", "silhouette", false},
-                      BlendedCase{"hybrid_sun", "hybrid", false}, BlendedCase{"hybrid_stencil_sun", "hybrid", false, true},
+    ::testing::Values(BlendedCase{"shadowmap_sun", "shadowmap", false},
+                      BlendedCase{"silhouette_sun", "silhouette", false}, BlendedCase{"hybrid_sun", "hybrid", false},
+                      BlendedCase{"hybrid_stencil_sun", "hybrid", false, true},
                       BlendedCase{"hybrid_stencil_point", "hybrid", true, true},
-                      BlendedCase{"volume_sun", "volume", false}, BlendedCase{"volume_point", "volume", true}),
+                      BlendedCase{"volume_sun", "volume", false}, BlendedCase{"volume_point", "volume", true},
+                      // The blended round counts the volumes extruded on the GPU too.
+                      BlendedCase{"volume_gpu_sun", "volume", false, false, true},
+                      BlendedCase{"volume_gpu_point", "volume", true, false, true},
+                      BlendedCase{"hybrid_stencil_gpu_point", "hybrid", true, true, true}),
     [](const ::testing::TestParamInfo<BlendedCase>& info) { return std::string(info.param.name); });
 
 namespace {
