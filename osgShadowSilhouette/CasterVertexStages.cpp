@@ -46,7 +46,13 @@ std::size_t CasterVertexStages::keepMovedReceivers(osgUtil::RenderBin& bin, cons
     {
         bool under = false;
         const osg::Program* own = graph->_leaves.empty() ? nullptr : programBelow(*graph, &pass, under);
-        if (!under || !own || programBelow(*graph, nullptr, under) == own) continue; // drawn as they are
+        if (!under || !own) continue;
+        // A light pass whose state leaves the program alone draws them as they are. The base
+        // pass keeps them under their own program whatever its state says now: the technique
+        // culls it before it knows the mode, and sets a stencil mode's program on that state
+        // afterwards, in the same frame (the first frame of SHADOW_VOLUME or HYBRID's stencil
+        // method drew them at their rest pose, into the depth the volumes count against).
+        if (!base && programBelow(*graph, nullptr, under) == own) continue;
         auto& leaves = graph->_leaves;
         const auto moved = std::stable_partition(leaves.begin(), leaves.end(), [&](const auto& leaf) {
             return !leaf->getDrawable() || !movesVertices(*own, *leaf->getDrawable());

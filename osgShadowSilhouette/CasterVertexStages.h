@@ -67,8 +67,10 @@ public:
      *  below @p pass) moves their vertices (movesVertices()) but that the pass draws with
      *  another (an OVERRIDE above it: the stencil modes' passes) would stand at their rest
      *  pose. The @p base pass draws them with their own program (`PROTECTED`), which shades
-     *  them itself; every other pass (the lights' additive and mask passes) leaves them out.
-     *  Returns the number of leaves moved or left out. */
+     *  them itself, whether or not its state overrides programs yet (a stencil mode sets its
+     *  program on that state after culling it, in the first frame); every other pass (the
+     *  lights' additive and mask passes) leaves them out. Returns the number of leaves moved
+     *  or left out. */
     std::size_t keepMovedReceivers(osgUtil::RenderBin& bin, const osg::StateSet& pass, bool base);
 
     /** Joined programs held (tests). */
