@@ -66,8 +66,8 @@ protected:
  *  like the receivers (its own state, its own vertex stage joined to the volume stages by
  *  CasterVertexStages, outside the view frustum too): its sides and dark cap, and its light
  *  cap with the CPU volumes' light-cap offset; always counted z-fail. The rule per caster is
- *  the CPU path's: the classic one for a closed caster wound outward, the open-caster rule
- *  (TWO_SIDED or LIT_FACES_ONLY) otherwise. One instance per view (StencilShadowPasses). */
+ *  the technique's CPU volumes': the classic one for a closed caster wound outward, TWO_SIDED
+ *  otherwise. One instance per view (StencilShadowPasses). */
 class GpuVolumes : public osg::Referenced
 {
 public:
