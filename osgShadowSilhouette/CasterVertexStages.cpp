@@ -1,5 +1,7 @@
 #include "CasterVertexStages.h"
 
+#include "RenderLeaves.h"
+
 #include <osgShadowSilhouette/ShaderConstants>
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 
@@ -72,10 +74,7 @@ std::size_t CasterVertexStages::keepMovedReceivers(osgUtil::RenderBin& bin, cons
         }
         leaves.erase(moved, leaves.end());
     }
-    auto& list = bin.getStateGraphList();
-    list.erase(
-        std::remove_if(list.begin(), list.end(), [](const osgUtil::StateGraph* g) { return g->_leaves.empty(); }),
-        list.end());
+    dropEmptyGraphs(bin);
     for (auto& nested : bin.getRenderBinList()) changed += keepMovedReceivers(*nested.second, pass, base);
     return changed;
 }
@@ -137,11 +136,7 @@ std::size_t CasterVertexStages::apply(osgUtil::RenderBin& bin, const osg::StateS
         moved += graph->_leaves.size();
         graph->_leaves.clear();
     }
-    // The emptied graphs go: a bin holds no empty state graph otherwise (eraseLeaves()).
-    auto& list = bin.getStateGraphList();
-    list.erase(
-        std::remove_if(list.begin(), list.end(), [](const osgUtil::StateGraph* g) { return g->_leaves.empty(); }),
-        list.end());
+    dropEmptyGraphs(bin); // a bin holds no empty state graph otherwise
     for (auto& nested : bin.getRenderBinList()) moved += apply(*nested.second, passState);
     return moved;
 }

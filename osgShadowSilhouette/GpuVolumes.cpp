@@ -215,28 +215,26 @@ std::size_t GpuVolumes::prepareLeaves(osgUtil::RenderBin& stage, osg::StateSet& 
                                       const std::unordered_map<const osg::Drawable*, const Caster*>& casters)
 {
     std::size_t kept = 0;
+    std::unordered_map<const osg::Drawable*, const Caster*> byStandIn; // the leaves' casters from here on
     eraseLeaves(stage, [&](osgUtil::RenderLeaf& leaf) {
         if (!leaf._parent || !under(leaf._parent, &pass)) return false;
         const auto found = leaf._drawable ? casters.find(leaf._drawable.get()) : casters.end();
         osg::Geometry* standIn = found == casters.end() ? nullptr : _adjacency->get(*found->second);
         if (!standIn) return true;
         leaf._drawable = standIn;
+        byStandIn.emplace(standIn, found->second);
         ++kept;
         return false;
     });
     if (kept == 0) return 0;
     if (_stages) _stages->apply(stage, pass);
-    applyRules(stage, pass, casters);
+    applyRules(stage, pass, byStandIn);
     return kept;
 }
 
 void GpuVolumes::applyRules(osgUtil::RenderBin& bin, const osg::StateSet& pass,
-                            const std::unordered_map<const osg::Drawable*, const Caster*>& casters)
+                            const std::unordered_map<const osg::Drawable*, const Caster*>& byStandIn)
 {
-    // The leaves draw stand-ins now: their casters by the stand-ins' sources.
-    std::unordered_map<const osg::Drawable*, const Caster*> byStandIn;
-    for (const auto& entry : casters)
-        if (osg::Geometry* standIn = _adjacency->get(*entry.second)) byStandIn.emplace(standIn, entry.second);
     const std::vector<osgUtil::StateGraph*> graphs = bin.getStateGraphList(); // grows below
     for (osgUtil::StateGraph* graph : graphs)
     {
@@ -260,11 +258,8 @@ void GpuVolumes::applyRules(osgUtil::RenderBin& bin, const osg::StateSet& pass,
             it = leaves.erase(it);
         }
     }
-    auto& list = bin.getStateGraphList();
-    list.erase(
-        std::remove_if(list.begin(), list.end(), [](const osgUtil::StateGraph* g) { return g->_leaves.empty(); }),
-        list.end());
-    for (auto& nested : bin.getRenderBinList()) applyRules(*nested.second, pass, casters);
+    dropEmptyGraphs(bin);
+    for (auto& nested : bin.getRenderBinList()) applyRules(*nested.second, pass, byStandIn);
 }
 
 void GpuVolumes::resizeGLObjectBuffers(unsigned int maxSize)

@@ -113,9 +113,9 @@ protected:
     std::size_t prepareLeaves(osgUtil::RenderBin& stage, osg::StateSet& pass,
                               const std::unordered_map<const osg::Drawable*, const Caster*>& casters);
     /** Moves the leaves under @p pass that need a rule state (two-sided, mirrored, culled
-     *  faces) under it. */
+     *  faces) under it; @p byStandIn: the casters of the stand-ins they draw. */
     void applyRules(osgUtil::RenderBin& bin, const osg::StateSet& pass,
-                    const std::unordered_map<const osg::Drawable*, const Caster*>& casters);
+                    const std::unordered_map<const osg::Drawable*, const Caster*>& byStandIn);
 
     osg::ref_ptr<osg::Program> _sidesProgram, _capProgram;
     osg::ref_ptr<CasterVertexStages> _stages;

@@ -22,6 +22,15 @@
 namespace osgShadowSilhouette {
 namespace detail {
 
+/** Removes from @p bin (not its nested bins) the state graphs without leaves (eraseLeaves()). */
+inline void dropEmptyGraphs(osgUtil::RenderBin& bin)
+{
+    osgUtil::RenderBin::StateGraphList& graphs = bin.getStateGraphList();
+    graphs.erase(std::remove_if(graphs.begin(), graphs.end(),
+                                [](const osgUtil::StateGraph* graph) { return graph->_leaves.empty(); }),
+                 graphs.end());
+}
+
 /** Removes from @p bin (and its nested bins) the leaves for which @p drop is true, and the state
  *  graphs left without leaves: a bin never holds an empty state graph otherwise, and after
  *  the cull OSG's SceneView deletes the empty ones (StateGraph::prune) while a depth-sorted
@@ -37,9 +46,7 @@ void eraseLeaves(osgUtil::RenderBin& bin, const Drop& drop)
                                     [&](const osg::ref_ptr<osgUtil::RenderLeaf>& leaf) { return drop(*leaf); }),
                      leaves.end());
     }
-    graphs.erase(std::remove_if(graphs.begin(), graphs.end(),
-                                [](const osgUtil::StateGraph* graph) { return graph->_leaves.empty(); }),
-                 graphs.end());
+    dropEmptyGraphs(bin);
     for (auto& nested : bin.getRenderBinList()) eraseLeaves(*nested.second, drop);
 }
 
