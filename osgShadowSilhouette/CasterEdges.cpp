@@ -87,6 +87,14 @@ bool drawnMovedOnGpu(const osg::NodePath& path, const osg::Geometry& geometry)
 
 namespace {
 
+/** Whether @p world mirrors (negative determinant of its 3x3 part). */
+bool worldMirrors(const osg::Matrixd& world)
+{
+    return (osg::Vec3d(world(0, 0), world(0, 1), world(0, 2)) ^ osg::Vec3d(world(1, 0), world(1, 1), world(1, 2))) *
+               osg::Vec3d(world(2, 0), world(2, 1), world(2, 2)) <
+           0.0;
+}
+
 /** Whether the culling `windings` (culledWindings()) culls a side of a geometry that a view
  *  ray may pass, so that the ray goes on behind the surface. A closed mesh wound outward
  *  whose inside alone is culled hides that inside behind its outside; any other culling
@@ -96,10 +104,7 @@ bool cullsASeenSide(unsigned char windings, bool closedOutward, const osg::Matri
     if (!windings) return false;
     if (!closedOutward || windings == (Caster::CULLS_CCW | Caster::CULLS_CW)) return true;
     // The outside is the counter-clockwise side, turned over by a mirroring world matrix.
-    const double det =
-        (osg::Vec3d(world(0, 0), world(0, 1), world(0, 2)) ^ osg::Vec3d(world(1, 0), world(1, 1), world(1, 2))) *
-        osg::Vec3d(world(2, 0), world(2, 1), world(2, 2));
-    const unsigned char outside = det >= 0.0 ? Caster::CULLS_CCW : Caster::CULLS_CW;
+    const unsigned char outside = worldMirrors(world) ? Caster::CULLS_CW : Caster::CULLS_CCW;
     return windings == outside;
 }
 
@@ -217,7 +222,15 @@ bool CasterEdges::update(const std::vector<Caster>& casters, const osg::Vec4d& l
             continue;
         }
         _extractor.extract(casters[i].mesh->getAdjacency(), worldLight, casters[i].world, edges);
-        for (const osg::Vec3f& p : edges.positions) _world.push_back(osg::Vec3d(p) * casters[i].world);
+        // A mirror turns the lit faces' winding as the light sees it: b -> a keeps the caster on the left.
+        const bool mirrored = worldMirrors(casters[i].world);
+        for (std::size_t k = 0; k + 1 < edges.positions.size(); k += 2)
+        {
+            const osg::Vec3d a = osg::Vec3d(edges.positions[k]) * casters[i].world;
+            const osg::Vec3d b = osg::Vec3d(edges.positions[k + 1]) * casters[i].world;
+            _world.push_back(mirrored ? b : a);
+            _world.push_back(mirrored ? a : b);
+        }
     }
     _written = false;
     return true;
