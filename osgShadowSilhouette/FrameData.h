@@ -3,6 +3,8 @@
 #ifndef OSGSHADOWSILHOUETTE_FRAMEDATA_H
 #define OSGSHADOWSILHOUETTE_FRAMEDATA_H
 
+#include "GpuEdges.h"
+
 #include <osgShadowSilhouette/SilhouetteShadowTechnique>
 
 #include <osg/Camera>
@@ -28,11 +30,13 @@ struct PassInputs
     osg::Matrixd view, projection;
     osg::Vec4d light;
     float polygonOffsetFactor = 0.0f; ///< getEffectivePolygonOffsetFactor() when rendered
+    /** getGpuExtraction() when rendered: which casters' edges the silhouette maps took from the GPU. */
+    SilhouetteShadowTechnique::GpuExtraction gpuExtraction = SilhouetteShadowTechnique::GPU_EXTRACTION_MOVED_CASTERS;
     bool operator==(const PassInputs& o) const
     {
         return valid && o.valid && glGeneration == o.glGeneration && mode == o.mode && casters == o.casters &&
                view == o.view && projection == o.projection && light == o.light &&
-               polygonOffsetFactor == o.polygonOffsetFactor;
+               polygonOffsetFactor == o.polygonOffsetFactor && gpuExtraction == o.gpuExtraction;
     }
 };
 
@@ -78,6 +82,7 @@ struct ViewData : public osg::Referenced
     std::vector<bool> slotInUse;                ///< slots whose map this frame's receivers read
     std::vector<bool> slotSkipped;             ///< ... of those, cube faces the eye pass leaves out (nothing to shadow)
     osg::ref_ptr<StencilShadowPasses> stencil; ///< SHADOW_VOLUME and HYBRID eye passes
+    osg::ref_ptr<GpuEdges> gpuEdges;           ///< the edges found on the GPU (maps, edge masks); null until needed
     /** ... and their screen-space visibility (detail::ScreenVisibility) for the receivers'
      *  own programs; null until needed. */
     osg::ref_ptr<osg::Referenced> screenVisibility;

@@ -47,6 +47,7 @@ struct PassSettings
     unsigned int debugLight = 0;
     SilhouetteShadowTechnique::Filter filter = SilhouetteShadowTechnique::FILTER_PCF_2X2; ///< the map modes'
     unsigned int filterWindow = 1;                                                        ///< FILTER_PCF's N
+    SilhouetteShadowTechnique::GpuExtraction gpuExtraction = SilhouetteShadowTechnique::GPU_EXTRACTION_MOVED_CASTERS;
     unsigned int softSamples = 64; ///< HYBRID's shadow rays per penumbra pixel (SoftSamples)
     SilhouetteShadowTechnique::Tuning tuning;
     unsigned int listSlots = 1;  ///< slots that can have triangle lists
@@ -76,9 +77,11 @@ struct PassServices
     std::function<bool()> applicationPrograms;
     /** Names the alpha-tested drawables a stencil method takes as opaque, once each. */
     std::function<void(bool hybrid, bool lists)> warnAlphaTested;
-    /** Names the casters moved by their own vertex stage that the CPU's geometry of a mode
-     *  leaves out (WarningLog::movedOnGpu()), once each. */
-    std::function<void(const std::vector<Caster>& casters, WarningLog::CpuGeometry mode)> warnMovedOnGpu;
+    /** The view's silhouette edges found on the GPU, taking the casters GpuExtraction names. */
+    std::function<GpuEdges*()> gpuEdges;
+    /** Culls the shadowed scene's casters under @p pass into the current bin of a light-space
+     *  pass whose model-view is the light's view (billboards turned as the eye sees them). */
+    std::function<void(osg::StateSet* pass)> cullLightCasters;
 };
 
 /** One cull of one view, as a mode's passes see it. */

@@ -95,10 +95,12 @@ std::vector<PropertyInfo> algorithmRows()
         {OSS_PROPERTY(GpuExtraction), P::ENUM, T::GPU_EXTRACTION_MOVED_CASTERS, T::GPU_EXTRACTION_ALL_CASTERS, 0, 1, "",
          {{"GPU_EXTRACTION_MOVED_CASTERS", T::GPU_EXTRACTION_MOVED_CASTERS, "moved"},
           {"GPU_EXTRACTION_ALL_CASTERS", T::GPU_EXTRACTION_ALL_CASTERS, "all"}},
-         "which casters' shadow volumes a geometry stage extrudes on the GPU",
+         "which casters' silhouette edges and shadow volumes a geometry stage finds on the GPU",
          "`GPU_EXTRACTION_MOVED_CASTERS`: those a vertex stage of their own moves (hardware skinning, "
          "`ShadowMovesVertices`), whose final positions the CPU never sees; `GPU_EXTRACTION_ALL_CASTERS`: "
-         "every caster, none built on the CPU. SHADOW_VOLUME and HYBRID's stencil volumes "
+         "every caster, none extracted on the CPU. SILHOUETTE_MAP's maps, FILTER_SILHOUETTE's distance maps "
+         "and HYBRID's edge masks ([docs/animation.md](docs/animation.md#silhouette-edges-found-on-the-gpu)); "
+         "SHADOW_VOLUME and HYBRID's stencil volumes "
          "([docs/animation.md](docs/animation.md#volumes-extruded-on-the-gpu))"},
     };
 }

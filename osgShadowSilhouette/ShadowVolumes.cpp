@@ -833,7 +833,7 @@ void StencilShadowPasses::cull(osgUtil::CullVisitor& cv, bool hybrid, int maskSl
         if (bin != outer->getRenderBinList().end()) detail::keepByBin(*bin->second, OUTER_BIN, false);
     };
     std::vector<StencilLight> culled; // the lights of this cull, for the blended round
-    const bool gpu = _gpu && _cullCasters && _gpu->extrudesAny(casters);
+    const bool gpu = _gpu && _cullCasters && _gpu->takesAny(casters);
     std::vector<Caster> marked; // every caster's volume on the GPU: none left to the CPU
     if (gpu && _gpu->getAllCasters()) marked = _gpu->leftToCpu(casters);
     const std::vector<Caster>& cpuCasters = marked.empty() ? casters : marked;

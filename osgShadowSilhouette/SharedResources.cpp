@@ -24,6 +24,47 @@ osg::ref_ptr<osg::Program> createProgram(const char* name, const char* vertex, c
     return program;
 }
 
+/** A shader of its own with @p define defined after the #version line of @p shader (not an OSG
+ *  define, which a draw of the same program object with other defines may not recompile). */
+osg::ref_ptr<osg::Shader> withDefine(const osg::Shader* shader, const char* define, const char* what)
+{
+    if (!shader) return nullptr;
+    std::string source = shader->getShaderSource();
+    source.insert(source.find('\n') + 1, std::string("#define ") + define + "\n");
+    osg::ref_ptr<osg::Shader> own = new osg::Shader(shader->getType(), source);
+    own->setName(shader->getName() + " (" + what + ")");
+    return own;
+}
+
+/** The programs of the shadow geometry found on the GPU (GpuVolumes, GpuEdges), each watched
+ *  by @p watchLink. */
+void createGpuExtractionPrograms(SharedResources& r, const std::function<void(osg::Program*)>& watchLink)
+{
+    r.gpuVolumeProgram = createProgram("osgShadowSilhouette shadow volumes extruded on the GPU",
+                                       shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
+    r.gpuVolumeCapProgram = createProgram("osgShadowSilhouette light caps extruded on the GPU",
+                                          shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
+    const osg::ref_ptr<osg::Shader> extrusion = loadShader(osg::Shader::GEOMETRY, shader::FILE_GPU_VOLUME_GEOM);
+    const osg::ref_ptr<osg::Shader> facing = loadShader(osg::Shader::GEOMETRY, shader::FILE_FACING_GEOM);
+    r.gpuVolumeProgram->addShader(extrusion.get());
+    r.gpuVolumeProgram->addShader(facing.get());
+    r.gpuVolumeCapProgram->addShader(withDefine(extrusion.get(), shader::DEFINE_GPU_VOLUME_LIGHT_CAP, "light caps"));
+    r.gpuVolumeCapProgram->addShader(facing.get());
+    const osg::ref_ptr<osg::Shader> edges = withDefine(loadShader(osg::Shader::GEOMETRY, shader::FILE_SILMAP_GEOM),
+                                                       shader::DEFINE_SILMAP_ADJACENCY, "triangles with adjacency");
+    const char* edgeFragments[GpuEdges::MAP_COUNT] = {shader::FILE_SILMAP_FRAG, shader::FILE_SILNBR_FRAG,
+                                                      shader::FILE_SILDIST_FRAG};
+    for (int map = 0; map < GpuEdges::MAP_COUNT; ++map)
+    {
+        r.gpuEdgePrograms[map] = createProgram("osgShadowSilhouette silhouette edges found on the GPU",
+                                               shader::FILE_SILMAP_VERT, edgeFragments[map]);
+        r.gpuEdgePrograms[map]->addShader(edges.get());
+        r.gpuEdgePrograms[map]->addShader(facing.get());
+    }
+    for (osg::Program* program : {r.gpuVolumeProgram.get(), r.gpuVolumeCapProgram.get()}) watchLink(program);
+    for (const osg::ref_ptr<osg::Program>& program : r.gpuEdgePrograms) watchLink(program.get());
+}
+
 } // namespace
 
 osg::ref_ptr<osg::StateSet> SharedResources::createPrepassStateSet() const
@@ -51,21 +92,7 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
         createProgram("osgShadowSilhouette shadow volumes", shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
     r->prepassProgram =
         createProgram("osgShadowSilhouette depth prepass", shader::FILE_DEPTH_VERT, shader::FILE_DEPTH_FRAG);
-    r->gpuVolumeProgram = createProgram("osgShadowSilhouette shadow volumes extruded on the GPU",
-                                        shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
-    r->gpuVolumeCapProgram = createProgram("osgShadowSilhouette light caps extruded on the GPU",
-                                           shader::FILE_VOLUME_VERT, shader::FILE_VOLUME_FRAG);
-    const osg::ref_ptr<osg::Shader> extrusion = loadShader(osg::Shader::GEOMETRY, shader::FILE_GPU_VOLUME_GEOM);
-    r->gpuVolumeProgram->addShader(extrusion.get());
-    if (extrusion)
-    {
-        // A shader of its own (its source's define after the #version line), not an OSG define.
-        std::string source = extrusion->getShaderSource();
-        source.insert(source.find('\n') + 1, std::string("#define ") + shader::DEFINE_GPU_VOLUME_LIGHT_CAP + "\n");
-        osg::ref_ptr<osg::Shader> cap = new osg::Shader(osg::Shader::GEOMETRY, source);
-        cap->setName(extrusion->getName() + " (light caps)");
-        r->gpuVolumeCapProgram->addShader(cap.get());
-    }
+    createGpuExtractionPrograms(*r, watchLink);
     r->adjacency = new AdjacencyDrawables;
     // The lighting equation in the receivers' vertex and fragment stages, one source
     // (PerPixelLighting chooses where it runs).
@@ -91,9 +118,7 @@ osg::ref_ptr<SharedResources> createSharedResources(float polygonOffsetFactor, f
     r->distanceMapStateSet = SilhouetteMapPass::createDistanceStateSet();
     r->defaultDistanceTexture = SilhouetteMapPass::createDefaultDistanceTexture();
 
-    for (osg::Program* program :
-         {r->volumeProgram.get(), r->prepassProgram.get(), r->gpuVolumeProgram.get(), r->gpuVolumeCapProgram.get()})
-        watchLink(program);
+    for (osg::Program* program : {r->volumeProgram.get(), r->prepassProgram.get()}) watchLink(program);
     for (osg::StateSet* ss :
          {r->depthPassStateSet.get(), r->listStateSet.get(), r->silhouetteMapStateSet.get(),
           r->distanceMapStateSet.get(), dynamic_cast<osg::StateSet*>(r->silhouetteMapStateSet->getUserData())})

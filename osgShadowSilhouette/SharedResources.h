@@ -3,6 +3,7 @@
 #define OSGSHADOWSILHOUETTE_SHARED_RESOURCES_H
 
 #include "CasterVertexStages.h"
+#include "GpuEdges.h"
 #include "GpuVolumes.h"
 
 #include <osg/Program>
@@ -27,6 +28,8 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Program> prepassProgram;  ///< the eye pass's depth prepass
     osg::ref_ptr<osg::Program> gpuVolumeProgram;    ///< volumes extruded by a geometry stage (GpuVolumes)
     osg::ref_ptr<osg::Program> gpuVolumeCapProgram; ///< ... their light caps
+    /** Silhouette edges found by a geometry stage (GpuEdges), per GpuEdges::Map. */
+    osg::ref_ptr<osg::Program> gpuEdgePrograms[GpuEdges::MAP_COUNT];
     osg::ref_ptr<osg::StateSet> depthPassStateSet;
     osg::ref_ptr<osg::StateSet> silhouetteMapStateSet;
     osg::ref_ptr<osg::StateSet> listStateSet;
@@ -39,7 +42,7 @@ struct SharedResources : public osg::Referenced
     osg::ref_ptr<osg::Texture2D> defaultDistanceTexture;      ///< a distance map without edges
     /** The casters' own vertex stages in the light passes (a cache, itself thread safe). */
     osg::ref_ptr<CasterVertexStages> casterStages;
-    /** The casters' welded faces with adjacency, for the volumes a geometry stage extrudes. */
+    /** The casters' welded faces with adjacency, for the edges and volumes a geometry stage finds. */
     osg::ref_ptr<AdjacencyDrawables> adjacency;
 
     /** The depth texture of a slot with nothing to shadow. */
@@ -59,6 +62,7 @@ struct SharedResources : public osg::Referenced
         for (osg::Program* program : {receiverProgram.get(), stencilProgram.get(), volumeProgram.get(),
                                       prepassProgram.get(), gpuVolumeProgram.get(), gpuVolumeCapProgram.get()})
             op(program);
+        for (const osg::ref_ptr<osg::Program>& program : gpuEdgePrograms) op(program.get());
         for (osg::StateSet* ss : {depthPassStateSet.get(), silhouetteMapStateSet.get(), listStateSet.get(),
                                   listFrontOnlyStateSet.get(), distanceMapStateSet.get()})
             op(ss);

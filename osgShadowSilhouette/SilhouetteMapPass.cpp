@@ -2,6 +2,7 @@
 #include <osgShadowSilhouette/ShaderConstants>
 #include <osgShadowSilhouette/SilhouettePoints>
 
+#include "GpuEdges.h"
 #include "ShaderSource.h"
 
 #include <osg/BlendEquation>
@@ -12,6 +13,7 @@
 #include <osg/Image>
 #include <osgUtil/CullVisitor>
 
+#include <algorithm>
 #include <cstring>
 
 namespace osgShadowSilhouette {
@@ -87,6 +89,34 @@ private:
 };
 
 } // namespace
+
+/** The GPU's edges (setGpuEdges()): per map the state of their draws, and this cull's casters
+ *  and light. */
+struct SilhouetteMapPass::GpuEdgePasses
+{
+    osg::ref_ptr<detail::GpuEdges> gpu;
+    CullCasters cullCasters;
+    osg::ref_ptr<osg::Uniform> light = new osg::Uniform(shader::GPU_EDGE_LIGHT, osg::Vec4f());
+    osg::ref_ptr<osg::StateSet> passes[detail::GpuEdges::MAP_COUNT];
+    std::vector<Caster> casters; ///< empty: the GPU takes none of this cull's casters
+    osg::Matrixd view;
+};
+
+/** An edge camera's cull callback: its own children (the CPU's edge lines), then the GPU's. */
+class SilhouetteMapPass::GpuEdgesCallback : public osg::NodeCallback
+{
+public:
+    GpuEdgesCallback(SilhouetteMapPass& pass, int map) : _pass(pass), _map(map) {}
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
+    {
+        traverse(node, nv);
+        if (osgUtil::CullVisitor* cv = nv->asCullVisitor()) _pass.cullGpuEdges(*cv, _map);
+    }
+
+private:
+    SilhouetteMapPass& _pass; ///< owns the camera
+    int _map;
+};
 
 namespace {
 
@@ -212,7 +242,7 @@ SilhouetteMapPass::SilhouetteMapPass(unsigned int mapSize, const osg::StateSet& 
 {
     osg::Camera& c = *_camera;
     c.setName(name);
-    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    addGpuEdges(c, detail::GpuEdges::POINTS);
     c.setRenderOrder(osg::Camera::PRE_RENDER, 1); // after the depth pass it reads
     c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     c.setImplicitBufferAttachmentMask(0, 0);     // colour only: no depth or stencil buffer
@@ -238,7 +268,7 @@ void SilhouetteMapPass::createNeighbourhoodPass()
     _neighbourhoodCamera = new osg::Camera;
     osg::Camera& c = *_neighbourhoodCamera;
     c.setName(_camera->getName() + " neighbourhood");
-    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    addGpuEdges(c, detail::GpuEdges::NEIGHBOURHOOD);
     c.setRenderOrder(osg::Camera::PRE_RENDER, 2); // after the silhouette map it reads
     c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     c.setImplicitBufferAttachmentMask(0, 0);
@@ -270,7 +300,7 @@ void SilhouetteMapPass::createDistancePass(const osg::StateSet& shared)
     _distanceCamera = new osg::Camera;
     osg::Camera& c = *_distanceCamera;
     c.setName(_camera->getName() + " distances");
-    c.setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    addGpuEdges(c, detail::GpuEdges::DISTANCES);
     c.setRenderOrder(osg::Camera::PRE_RENDER, 1); // after the depth pass
     c.setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     c.setComputeNearFarMode(osg::Camera::DO_NOT_COMPUTE_NEAR_FAR);
@@ -296,7 +326,7 @@ void SilhouetteMapPass::cullDistanceMap(osgUtil::CullVisitor& cv, const LightFru
                                         const osg::StateSet& shared, float width, const std::vector<Caster>& casters,
                                         const osg::Vec4d& light)
 {
-    _extractionSkipped = !_edges->update(casters, light);
+    _extractionSkipped = !updateEdges(casters, light, frustum);
     _edges->writeLines(frustum.view);
     if (!_distanceCamera) createDistancePass(shared);
     _drewDistances = true;
@@ -307,6 +337,56 @@ void SilhouetteMapPass::cullDistanceMap(osgUtil::CullVisitor& cv, const LightFru
 }
 
 SilhouetteMapPass::~SilhouetteMapPass() = default;
+
+void SilhouetteMapPass::addGpuEdges(osg::Camera& camera, int map)
+{
+    // The view's eye chooses the LODs, as in the depth pass (the edges' camera has no view).
+    camera.setReferenceFrame(osg::Camera::ABSOLUTE_RF_INHERIT_VIEWPOINT);
+    camera.setCullCallback(new GpuEdgesCallback(*this, map));
+}
+
+void SilhouetteMapPass::setGpuEdges(detail::GpuEdges* gpu, CullCasters cullCasters)
+{
+    if (!gpu)
+    {
+        _gpu.reset();
+        return;
+    }
+    if (!_gpu || _gpu->gpu != gpu)
+    {
+        _gpu.reset(new GpuEdgePasses);
+        _gpu->gpu = gpu;
+    }
+    _gpu->cullCasters = std::move(cullCasters);
+}
+
+detail::GpuEdges* SilhouetteMapPass::getGpuEdges() const
+{
+    return _gpu ? _gpu->gpu.get() : nullptr;
+}
+
+bool SilhouetteMapPass::updateEdges(const std::vector<Caster>& casters, const osg::Vec4d& light,
+                                    const LightFrustum& frustum)
+{
+    _gpuEdgeCasters = 0;
+    if (_gpu) _gpu->casters.clear();
+    if (!_gpu || !_gpu->gpu->takesAny(casters)) return _edges->update(casters, light);
+    _gpu->casters = casters;
+    _gpu->view = frustum.view;
+    osg::Vec4d viewLight = light * frustum.view;
+    if (viewLight.w() != 0.0) viewLight /= viewLight.w();
+    _gpu->light->set(osg::Vec4f(viewLight));
+    return _edges->update(_gpu->gpu->getAllCasters() ? _gpu->gpu->leftToCpu(casters) : casters, light);
+}
+
+void SilhouetteMapPass::cullGpuEdges(osgUtil::CullVisitor& cv, int map)
+{
+    if (!_gpu || _gpu->casters.empty()) return;
+    osg::ref_ptr<osg::StateSet>& pass = _gpu->passes[map];
+    if (!pass) pass = _gpu->gpu->createPass(detail::GpuEdges::Map(map), _gpu->light.get());
+    const std::size_t culled = _gpu->gpu->cull(cv, *pass, _gpu->view, _gpu->casters, _gpu->cullCasters);
+    _gpuEdgeCasters = std::max(_gpuEdgeCasters, static_cast<unsigned int>(culled));
+}
 
 void SilhouetteMapPass::setDepthComparison(bool compare)
 {
@@ -334,7 +414,7 @@ void SilhouetteMapPass::setDepthComparison(bool compare)
 void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frustum, osg::Texture2D* depthTexture,
                              const std::vector<Caster>& casters, const osg::Vec4d& light)
 {
-    _extractionSkipped = !_edges->update(casters, light);
+    _extractionSkipped = !updateEdges(casters, light, frustum);
     _edges->writeLines(frustum.view);
     _drewDistances = false;
     _camera->setProjectionMatrix(frustum.projection);

@@ -26,6 +26,7 @@ void cullSilhouettePass(ModeFrame& mf, LightPass& pass, const LightDescription& 
         pass.silhouettePass = new SilhouetteMapPass(size, *mf.settings.silhouetteMapStateSet, name);
     }
     pass.silhouettePass->setDepthComparison(depthComparison);
+    pass.silhouettePass->setGpuEdges(mf.services.gpuEdges(), mf.services.cullLightCasters);
     const unsigned int mask = mf.cv.getTraversalMask();
     mf.cv.setTraversalMask(~0u); // the pass draws only its edges, whatever the view's mask
     pass.silhouettePass->cull(mf.cv, pass.frustum, pass.depthTexture.get(), mf.frame.casterList, light.homogeneous());
@@ -65,6 +66,7 @@ void cullDistanceSlot(ModeFrame& mf, SlotCull& slot)
     }
     if (slot.depthRendered || !pass->getDistanceTexture() || pass->getDistanceWidth() != width)
     {
+        pass->setGpuEdges(mf.services.gpuEdges(), mf.services.cullLightCasters);
         const unsigned int mask = mf.cv.getTraversalMask();
         mf.cv.setTraversalMask(~0u); // the pass draws only its edges, whatever the view's mask
         pass->cullDistanceMap(mf.cv, slot.pass.frustum, *mf.settings.distanceMapStateSet, width, mf.frame.casterList,
@@ -94,7 +96,6 @@ public:
     void planFrame(ModeFrame& mf) override
     {
         mf.eye.filter = filtersEdges(mf.settings) ? mf.settings.filter : SilhouetteShadowTechnique::FILTER_PCF_2X2;
-        mf.services.warnMovedOnGpu(mf.frame.casterList, WarningLog::CpuGeometry::SilhouetteEdges);
     }
 
     bool keepsSlotPasses(const LightPass& pass, const PassSettings& settings) const override

@@ -7,6 +7,7 @@
 #include "LightPlanning.h"
 #include "SharedResources.h"
 #include "SoftFilter.h"
+#include "RenderLeaves.h"
 #include "ViewState.h"
 
 #include <osg/GLExtensions>
@@ -103,6 +104,7 @@ PassSettings TechniqueCull::passSettings() const
     s.debugLight = _t._debugLight;
     s.filter = _t._filter;
     s.filterWindow = _t._filterWindow;
+    s.gpuExtraction = _t._gpuExtraction;
     s.softSamples = _t._softSamples;
     s.tuning = _t._tuning;
     s.listSlots = _t.listSlots();
@@ -129,9 +131,18 @@ PassServices TechniqueCull::passServices()
     services.cullReceivers = [this](osg::StateSet* pass) { _t.cullReceivers(_cv, _vd, pass); };
     services.applicationPrograms = [this]() { return _t.hasApplicationPrograms(); };
     services.warnAlphaTested = [log = _t._warnings.get()](bool hybrid, bool lists) { log->alphaTested(hybrid, lists); };
-    services.warnMovedOnGpu = [log = _t._warnings.get()](const std::vector<Caster>& casters,
-                                                         WarningLog::CpuGeometry mode) {
-        log->movedOnGpu(casters, mode);
+    services.gpuEdges = [this]() {
+        const SharedResources& shared = *_t._shared;
+        if (!_vd.gpuEdges)
+            _vd.gpuEdges = new GpuEdges(shared.gpuEdgePrograms, shared.casterStages.get(), shared.adjacency.get());
+        _vd.gpuEdges->setAllCasters(_settings.gpuExtraction == SilhouetteShadowTechnique::GPU_EXTRACTION_ALL_CASTERS);
+        return _vd.gpuEdges.get();
+    };
+    services.cullLightCasters = [this](osg::StateSet* pass) {
+        cullCasters(_cv, *_t._shadowedScene, pass);
+        osgUtil::RenderBin* bin = _cv.getCurrentRenderBin();
+        if (_frame.billboards && !_frame.billboards->empty() && bin && bin->getStage())
+            turnBillboardLeaves(*bin->getStage(), *_frame.billboards, *_cv.getModelViewMatrix());
     };
     return services;
 }

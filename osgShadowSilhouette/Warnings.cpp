@@ -116,28 +116,5 @@ void WarningLog::alphaTested(bool hybrid, bool lists)
              << " (SHADOW_MAP and SILHOUETTE_MAP cast the cut-out shapes)" << std::endl;
 }
 
-void WarningLog::movedOnGpu(const std::vector<Caster>& casters, CpuGeometry mode)
-{
-    Lock lock(_mutex);
-    std::vector<std::string> names;
-    std::size_t count = 0, unnamed = 0;
-    for (const Caster& caster : casters)
-    {
-        if (!caster.movedOnGpu || !_movedOnGpuNamed.insert({mode, caster.geometry.get()}).second) continue;
-        ++count;
-        if (caster.geometry->getName().empty())
-            ++unnamed;
-        else
-            names.push_back("'" + caster.geometry->getName() + "'");
-    }
-    if (count == 0) return;
-    OSG_WARN << "osgShadowSilhouette: SILHOUETTE_MAP: " << count << (count == 1 ? " caster is" : " casters are")
-             << " drawn by a program whose vertex stage moves its vertices: " << listOf(names, unnamed)
-             << "; the CPU cannot know where that stage puts its triangles, so it gives the silhouette map no "
-                "edges: its shadows' edges are the depth map's (every other mode runs that vertex stage and casts "
-                "its shape)"
-             << std::endl;
-}
-
 } // namespace detail
 } // namespace osgShadowSilhouette

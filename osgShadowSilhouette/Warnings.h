@@ -69,16 +69,6 @@ public:
      *  naming the alpha-tested drawables not yet named in it: the exact tests take their
      *  triangles whole. */
     void alphaTested(bool hybrid, bool lists);
-    /** What the CPU's geometry of a mode does without the casters drawn by a vertex stage of
-     *  their own that moves their vertices (Caster::movedOnGpu). The shadow volumes of such
-     *  casters are extruded on the GPU (GpuVolumes.h). */
-    enum class CpuGeometry
-    {
-        SilhouetteEdges ///< SILHOUETTE_MAP: the depth map's answer at their edges
-    };
-    /** One message per mode naming the casters of @p casters with a vertex stage of their
-     *  own that are not yet named in it. */
-    void movedOnGpu(const std::vector<Caster>& casters, CpuGeometry mode);
 
 private:
     OpenThreads::Mutex _mutex;
@@ -88,7 +78,6 @@ private:
     std::vector<osg::observer_ptr<osg::Drawable>> _alphaTested;
     std::set<std::pair<int, const osg::Drawable*>>
         _alphaTestedNamed; ///< (0 volumes, 1 HYBRID stencil, 2 lists; drawable)
-    std::set<std::pair<CpuGeometry, const osg::Drawable*>> _movedOnGpuNamed;
 };
 
 } // namespace detail

@@ -54,34 +54,9 @@ vec3 oss_eye(int i)
     return p.xyz / p.w;
 }
 
-bool oss_before(vec3 a, vec3 b)
-{
-    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-}
-
-// > 0: the face a -> b -> c (eye space) turns its counter-clockwise side toward the light.
-// Evaluated from the face's first corner in position order, so that a face and its
-// neighbour, which see its corners in another rotation, round alike and agree on its sign
-// (were they to disagree, a side would be left uncancelled or missing).
-float oss_facing(vec3 a, vec3 b, vec3 c)
-{
-    if (oss_before(b, a) && oss_before(b, c))
-    {
-        vec3 t = a;
-        a = b;
-        b = c;
-        c = t;
-    }
-    else if (oss_before(c, a) && oss_before(c, b))
-    {
-        vec3 t = a;
-        a = c;
-        c = b;
-        b = t;
-    }
-    vec3 n = cross(b - a, c - a);
-    return dot(n, oss_gpuVolumeLight.xyz - a * oss_gpuVolumeLight.w);
-}
+// > 0: the face a -> b -> c (eye space) turns its counter-clockwise side toward the light
+// (oss_facing.geom.glsl).
+float oss_facing(vec3 a, vec3 b, vec3 c, vec4 light);
 
 // The facing of the caster's own winding: lit as the CPU path classifies its planes.
 bool oss_lit(float facing)
@@ -139,7 +114,7 @@ void main()
     vec3 p[6];
     for (int i = 0; i < 6; ++i)
         p[i] = oss_eye(i);
-    float facing = oss_facing(p[0], p[2], p[4]);
+    float facing = oss_facing(p[0], p[2], p[4], oss_gpuVolumeLight);
     bool lit = oss_lit(facing);
     if (!lit && (oss_gpuVolumeRule & OSS_RULE_TWO_SIDED) == 0)
         return;
@@ -170,7 +145,7 @@ void main()
         int i = 2 * k, j = (2 * k + 2) % 6, across = 2 * k + 1, opposite = (2 * k + 4) % 6;
         bool open = gl_in[across].gl_Position == gl_in[opposite].gl_Position;
         // The face across runs along the edge j -> i.
-        if (!open && oss_lit(oss_facing(p[j], p[i], p[across])) == lit)
+        if (!open && oss_lit(oss_facing(p[j], p[i], p[across], oss_gpuVolumeLight)) == lit)
             continue; // cast the same way: the two sides cancel
         // The edge as the face runs along it seen from the light: e0 -> e1.
         int e0 = toward ? i : j, e1 = toward ? j : i;

@@ -10,8 +10,18 @@
 // depth-texel coordinates minus one half, so that silhouette texel (i, j) spans
 // [i, i+1] x [j, j+1] and its local coordinates are the window coordinates minus (i, j).
 
+#ifdef OSS_SILMAP_ADJACENCY
+// The edges found on the GPU (GpuEdges.h; the program's own source defines this, not OSG):
+// the input is a caster's welded mesh drawn as GL_TRIANGLES_ADJACENCY through the caster's
+// own vertex stage (corners 0, 2, 4 a face, 1, 3, 5 the corners across the edges 0-2, 2-4,
+// 4-0; an edge without exactly one face across names the face's own third corner), and each
+// face emits the silhouette edges the CPU path (SilhouetteExtractor) finds along it.
+layout(triangles_adjacency) in;
+layout(triangle_strip, max_vertices = 12) out;
+#else
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
+#endif
 
 #pragma import_defines(OSS_SILMAP_COMPARE, OSS_SILMAP_NEIGHBOURHOOD, OSS_SILMAP_DISTANCE)
 #define OSS_GRID_OFFSET 0.5 // the dual grid: window coordinates are depth-texel coordinates less this
@@ -70,9 +80,9 @@ void oss_emit(vec2 window, vec2 size, vec4 edge, vec2 depth)
     EmitVertex();
 }
 
-void main()
+// One edge a -> b (clip space): the thin quad over the texels it touches.
+void oss_emitEdge(vec4 a, vec4 b)
 {
-    vec4 a = gl_in[0].gl_Position, b = gl_in[1].gl_Position;
     if (!oss_clipToFront(a, b))
         return;
     vec2 size = OSS_MAP_SIZE;
@@ -92,3 +102,58 @@ void main()
     oss_emit(wb + along + across, size, edge, depth);
     EndPrimitive();
 }
+
+#ifdef OSS_SILMAP_ADJACENCY
+// The light in the light's view space: (x, y, z, 1) a positional light, (x, y, z, 0) toward a
+// directional one.
+uniform vec4 oss_gpuEdgeLight;
+// The caster's rule, a bit of the GPU volumes' (oss_gpuvolume.geom.glsl): 1 TWO_SIDED (an open
+// caster: its faces away from the light cast too, turned).
+uniform int oss_gpuVolumeRule;
+const int OSS_RULE_TWO_SIDED = 1;
+
+vec3 oss_view(int i)
+{
+    vec4 p = gl_ProjectionMatrixInverse * gl_in[i].gl_Position;
+    return p.xyz / p.w;
+}
+
+float oss_facing(vec3 a, vec3 b, vec3 c, vec4 light); // oss_facing.geom.glsl
+
+// Whether the face a -> b -> c (view space) turns its counter-clockwise side toward the light,
+// strictly, as the CPU path's plane test. A mirroring model-view turns every face, which
+// changes no silhouette edge, only their direction: here the casting side of each edge, on its
+// left in the map (the distance map's sign), is the caster's side whatever the model-view.
+bool oss_lit(vec3 a, vec3 b, vec3 c)
+{
+    return oss_facing(a, b, c, oss_gpuEdgeLight) > 0.0;
+}
+
+// The CPU path's edges, each drawn once: an edge between a lit face and an unlit one, by the
+// lit face, along its own winding; an open edge of a lit face along its winding, and under
+// TWO_SIDED an open edge of an unlit face against it (CasterEdges draws a mirrored caster's
+// edges turned, as here).
+void main()
+{
+    vec3 p[6];
+    for (int i = 0; i < 6; ++i)
+        p[i] = oss_view(i);
+    bool lit = oss_lit(p[0], p[2], p[4]);
+    if (!lit && (oss_gpuVolumeRule & OSS_RULE_TWO_SIDED) == 0)
+        return;
+    for (int k = 0; k < 3; ++k)
+    {
+        int i = 2 * k, j = (2 * k + 2) % 6, across = 2 * k + 1, opposite = (2 * k + 4) % 6;
+        bool open = gl_in[across].gl_Position == gl_in[opposite].gl_Position;
+        if (open)
+            oss_emitEdge(gl_in[lit ? i : j].gl_Position, gl_in[lit ? j : i].gl_Position);
+        else if (lit && !oss_lit(p[j], p[i], p[across])) // the face across runs along j -> i
+            oss_emitEdge(gl_in[i].gl_Position, gl_in[j].gl_Position);
+    }
+}
+#else
+void main()
+{
+    oss_emitEdge(gl_in[0].gl_Position, gl_in[1].gl_Position);
+}
+#endif
