@@ -6,6 +6,8 @@
 #include <osgShadowSilhouette/MeshAdjacency>
 #include <osgShadowSilhouette/HalfEdgeMesh>
 
+#include "VertexBounds.h"
+
 #include <OpenMesh/Core/System/omstream.hh>
 #include <osg/Notify>
 #include <osg/TriangleIndexFunctor>
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 #if defined(__SSE2__)
@@ -494,6 +497,15 @@ void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& r
         if (w < MeshWelding::kNonFinite && welding.sourceOf[w] == kInvalid)
             welding.sourceOf[w] = static_cast<std::uint32_t>(i);
     }
+    welding.weldedAway.clear();
+    welding.everyVertexUsed = true;
+    for (std::size_t i = 0; i < welded.weldedOf.size(); ++i)
+    {
+        const std::uint32_t w = welded.weldedOf[i];
+        welding.everyVertexUsed = welding.everyVertexUsed && w < MeshWelding::kNonFinite;
+        if (w < MeshWelding::kNonFinite && welding.sourceOf[w] != i)
+            welding.weldedAway.push_back(static_cast<std::uint32_t>(i));
+    }
     for (std::size_t t : refused)
         for (int k = 0; k < 3; ++k) welding.sourceOf.push_back(welding.sourceOf[welded.indices[t + k]]);
     welding.partRuns = std::move(runs);
@@ -521,20 +533,59 @@ bool finiteBounds(const ArrayT& array, const MeshWelding& welding, osg::Bounding
     return true;
 }
 
+/** finiteBounds(), for a float array whose every vertex is used (MeshWelding::everyVertexUsed)
+ *  the box of the whole array in one pass (detail::finiteBox()): in float, the same extremes
+ *  since floats convert to double exactly and in order (a zero extreme may change its sign,
+ *  which the box's diagonal, all it is used for, does not see). */
+template <class ArrayT>
+bool referencedBounds(const ArrayT& array, const MeshWelding& welding, osg::BoundingBoxd& box)
+{
+    if constexpr (std::is_same_v<ArrayT, osg::Vec3Array>)
+    {
+        if (welding.everyVertexUsed)
+        {
+            osg::Vec3f low, high;
+            if (!detail::finiteBox(array.empty() ? nullptr : &array.front(), array.size(), low, high)) return false;
+            box._min = osg::Vec3d(low);
+            box._max = osg::Vec3d(high);
+            return true;
+        }
+    }
+    return finiteBounds(array, welding, box);
+}
+
 /** Whether every welded vertex of @p array is still within @p distance of the first vertex
- *  of its group (the one whose position the mesh vertex has, as the welder compares). */
+ *  of its group (the one whose position the mesh vertex has, as the welder compares): the
+ *  others (MeshWelding::weldedAway) are the first of their group. */
 template <class ArrayT>
 bool weldsHold(const ArrayT& array, const MeshWelding& welding, double distance)
 {
     const double limit = distance * distance;
-    for (std::size_t i = 0; i < welding.weldedOf.size(); ++i)
+    for (const std::uint32_t i : welding.weldedAway)
     {
-        const std::uint32_t w = welding.weldedOf[i];
-        if (w >= MeshWelding::kNonFinite) continue;
-        const std::uint32_t first = welding.sourceOf[w];
-        if (first != i && (toVec3d(array[i]) - toVec3d(array[first])).length2() > limit) return false;
+        const std::uint32_t first = welding.sourceOf[welding.weldedOf[i]];
+        if ((toVec3d(array[i]) - toVec3d(array[first])).length2() > limit) return false;
     }
     return true;
+}
+
+/** Mesh vertex v at input vertex sourceOf[v]; float positions are copied as they are (the
+ *  round trip through double that other types take changes no finite float). */
+template <class ArrayT>
+void gatherPositions(const ArrayT& array, const MeshWelding& welding, std::vector<osg::Vec3f>& out)
+{
+    out.resize(welding.sourceOf.size());
+    const std::uint32_t* source = welding.sourceOf.data();
+    for (std::size_t v = 0; v < out.size(); ++v)
+    {
+        if constexpr (std::is_same_v<ArrayT, osg::Vec3Array>)
+            out[v] = array[source[v]];
+        else
+        {
+            const osg::Vec3d p = toVec3d(array[source[v]]);
+            out[v].set(float(p.x()), float(p.y()), float(p.z()));
+        }
+    }
 }
 
 /** The positions and welding distance of @p out from @p array, if the welding holds. */
@@ -543,16 +594,11 @@ bool refreshPositions(const ArrayT& array, const MeshWelding& welding, MeshAdjac
 {
     if (array.size() != welding.weldedOf.size()) return false;
     osg::BoundingBoxd box;
-    if (!finiteBounds(array, welding, box)) return false;
+    if (!referencedBounds(array, welding, box)) return false;
     const double distance = box.valid() ? welding.weldTolerance * (box._max - box._min).length() : 0.0;
     if (!weldsHold(array, welding, distance)) return false;
     out.report.weldDistance = distance;
-    out.positions.resize(welding.sourceOf.size());
-    for (std::size_t v = 0; v < welding.sourceOf.size(); ++v)
-    {
-        const osg::Vec3d p = toVec3d(array[welding.sourceOf[v]]);
-        out.positions[v].set(float(p.x()), float(p.y()), float(p.z()));
-    }
+    gatherPositions(array, welding, out.positions);
     return true;
 }
 
