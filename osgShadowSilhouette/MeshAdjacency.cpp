@@ -6,6 +6,8 @@
 #include <osgShadowSilhouette/MeshAdjacency>
 #include <osgShadowSilhouette/HalfEdgeMesh>
 
+#include "VertexBounds.h"
+
 #include <OpenMesh/Core/System/omstream.hh>
 #include <osg/Notify>
 #include <osg/TriangleIndexFunctor>
@@ -16,10 +18,14 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
 #endif
 
 namespace osgShadowSilhouette {
@@ -382,9 +388,16 @@ struct CornerPair
     __m128d x, y, z;
 };
 
+/** (x, y) of @p p in double: its first two floats in one load, converted together (exactly). */
+inline __m128d xyOf(const osg::Vec3f& p)
+{
+    return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p.ptr()))));
+}
+
 inline CornerPair cornerPair(const osg::Vec3f& p, const osg::Vec3f& q)
 {
-    return CornerPair{_mm_set_pd(q.x(), p.x()), _mm_set_pd(q.y(), p.y()), _mm_set_pd(q.z(), p.z())};
+    const __m128d pxy = xyOf(p), qxy = xyOf(q);
+    return CornerPair{_mm_unpacklo_pd(pxy, qxy), _mm_unpackhi_pd(pxy, qxy), _mm_set_pd(q.z(), p.z())};
 }
 
 /** computeRunPlanes() for faces f and f + 1 at once, the same operations in the same order in
@@ -435,11 +448,99 @@ void computeRunPlanesSse2(MeshAdjacency& m, std::uint32_t first, std::uint32_t e
 }
 #endif
 
-/** computeRunPlanes(), in SSE2 where the compiler targets it. */
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define OSS_AVX_PLANES 1
+/** A corner of four faces f .. f + 3 in double, each coordinate as the four faces' values. */
+struct CornerQuad
+{
+    __m256d x, y, z;
+};
+
+/** Corner @p k of faces f .. f + 3: the floats gathered four by four, then converted
+ *  (exactly) to double. */
+__attribute__((target("avx"))) inline CornerQuad cornerQuad(const MeshAdjacency& m, std::uint32_t f, int k)
+{
+    const MeshTriangle* t = m.faces.data() + f;
+    const float* p0 = m.positions[t[0].v[k]].ptr();
+    const float* p1 = m.positions[t[1].v[k]].ptr();
+    const float* p2 = m.positions[t[2].v[k]].ptr();
+    const float* p3 = m.positions[t[3].v[k]].ptr();
+    const auto xy = [](const float* a, const float* b) { // (xa, ya, xb, yb)
+        const __m128 low = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(a)));
+        return _mm_loadh_pi(low, reinterpret_cast<const __m64*>(b));
+    };
+    const __m128 xy01 = xy(p0, p1), xy23 = xy(p2, p3);
+    const __m128 z01 = _mm_unpacklo_ps(_mm_load_ss(p0 + 2), _mm_load_ss(p1 + 2));
+    const __m128 z23 = _mm_unpacklo_ps(_mm_load_ss(p2 + 2), _mm_load_ss(p3 + 2));
+    return CornerQuad{_mm256_cvtps_pd(_mm_shuffle_ps(xy01, xy23, _MM_SHUFFLE(2, 0, 2, 0))),
+                      _mm256_cvtps_pd(_mm_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 1, 3, 1))),
+                      _mm256_cvtps_pd(_mm_movelh_ps(z01, z23))};
+}
+
+/** computeRunPlanes() for faces f .. f + 3 at once, the same operations in the same order in
+ *  AVX's four lanes (no fused multiply-add); returns their four n . (a - origin). */
+__attribute__((target("avx"))) inline __m256d planeQuad(MeshAdjacency& m, std::uint32_t f, const __m256d origin[3])
+{
+    const CornerQuad a = cornerQuad(m, f, 0), b = cornerQuad(m, f, 1), c = cornerQuad(m, f, 2);
+    const __m256d ux = _mm256_sub_pd(b.x, a.x), uy = _mm256_sub_pd(b.y, a.y), uz = _mm256_sub_pd(b.z, a.z);
+    const __m256d vx = _mm256_sub_pd(c.x, a.x), vy = _mm256_sub_pd(c.y, a.y), vz = _mm256_sub_pd(c.z, a.z);
+    const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(uy, vz), _mm256_mul_pd(uz, vy));
+    const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(uz, vx), _mm256_mul_pd(ux, vz));
+    const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(ux, vy), _mm256_mul_pd(uy, vx));
+    const __m256d dot =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, a.x), _mm256_mul_pd(ny, a.y)), _mm256_mul_pd(nz, a.z));
+    const __m256d w = _mm256_xor_pd(dot, _mm256_set1_pd(-0.0)); // -(n . a), as the scalar negation
+    // (nx, ny, nz, w) per face: a 4 x 4 transpose
+    const __m256d t0 = _mm256_unpacklo_pd(nx, ny), t1 = _mm256_unpackhi_pd(nx, ny);
+    const __m256d t2 = _mm256_unpacklo_pd(nz, w), t3 = _mm256_unpackhi_pd(nz, w);
+    double* out = m.planes[f].ptr();
+    _mm256_storeu_pd(out, _mm256_permute2f128_pd(t0, t2, 0x20));
+    _mm256_storeu_pd(out + 4, _mm256_permute2f128_pd(t1, t3, 0x20));
+    _mm256_storeu_pd(out + 8, _mm256_permute2f128_pd(t0, t2, 0x31));
+    _mm256_storeu_pd(out + 12, _mm256_permute2f128_pd(t1, t3, 0x31));
+    const __m256d dx = _mm256_sub_pd(a.x, origin[0]), dy = _mm256_sub_pd(a.y, origin[1]),
+                  dz = _mm256_sub_pd(a.z, origin[2]);
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)), _mm256_mul_pd(nz, dz));
+}
+
+/** computeRunPlanes() four faces a step in AVX: faces up to a multiple of four and the last
+ *  ones one by one, the others by four whose sums go to lanes 0 .. 3, as the SSE2 pairs'. */
+template <bool kVolumes>
+__attribute__((target("avx"))) void computeRunPlanesAvx(MeshAdjacency& m, std::uint32_t first, std::uint32_t end,
+                                                        const osg::Vec3d& origin, double* lanes)
+{
+    const std::uint32_t head = std::min(end, (first + 3) / 4 * 4);
+    computeRunPlanes<kVolumes>(m, first, head, origin, lanes);
+    const __m256d o[3] = {_mm256_set1_pd(origin.x()), _mm256_set1_pd(origin.y()), _mm256_set1_pd(origin.z())};
+    __m256d sums = kVolumes ? _mm256_loadu_pd(lanes) : _mm256_setzero_pd();
+    std::uint32_t f = head;
+    for (; f + 4 <= end; f += 4)
+    {
+        const __m256d quad = planeQuad(m, f, o);
+        if constexpr (kVolumes) sums = _mm256_add_pd(sums, quad);
+    }
+    if constexpr (kVolumes) _mm256_storeu_pd(lanes, sums);
+    _mm256_zeroupper(); // the SSE code after it would pay for the upper halves (not done for us)
+    computeRunPlanes<kVolumes>(m, f, end, origin, lanes);
+}
+
+/** Whether the processor and the system run AVX (asked once). */
+bool avxPlanes()
+{
+    static const bool avx = __builtin_cpu_supports("avx");
+    return avx;
+}
+#endif
+
+/** computeRunPlanes(), in AVX where the processor has it, else in SSE2 where the compiler
+ *  targets it: the same planes and sums to the last bit. */
 template <bool kVolumes>
 void computeRunPlanesFast(MeshAdjacency& m, std::uint32_t first, std::uint32_t end, const osg::Vec3d& origin,
                           double* lanes)
 {
+#if defined(OSS_AVX_PLANES)
+    if (avxPlanes()) return computeRunPlanesAvx<kVolumes>(m, first, end, origin, lanes);
+#endif
 #if defined(__SSE2__)
     computeRunPlanesSse2<kVolumes>(m, first, end, origin, lanes);
 #else
@@ -494,6 +595,15 @@ void describeWelding(const WeldedSoup& welded, const std::vector<std::size_t>& r
         if (w < MeshWelding::kNonFinite && welding.sourceOf[w] == kInvalid)
             welding.sourceOf[w] = static_cast<std::uint32_t>(i);
     }
+    welding.weldedAway.clear();
+    welding.everyVertexUsed = true;
+    for (std::size_t i = 0; i < welded.weldedOf.size(); ++i)
+    {
+        const std::uint32_t w = welded.weldedOf[i];
+        welding.everyVertexUsed = welding.everyVertexUsed && w < MeshWelding::kNonFinite;
+        if (w < MeshWelding::kNonFinite && welding.sourceOf[w] != i)
+            welding.weldedAway.push_back(static_cast<std::uint32_t>(i));
+    }
     for (std::size_t t : refused)
         for (int k = 0; k < 3; ++k) welding.sourceOf.push_back(welding.sourceOf[welded.indices[t + k]]);
     welding.partRuns = std::move(runs);
@@ -521,20 +631,59 @@ bool finiteBounds(const ArrayT& array, const MeshWelding& welding, osg::Bounding
     return true;
 }
 
+/** finiteBounds(), for a float array whose every vertex is used (MeshWelding::everyVertexUsed)
+ *  the box of the whole array in one pass (detail::finiteBox()): in float, the same extremes
+ *  since floats convert to double exactly and in order (a zero extreme may change its sign,
+ *  which the box's diagonal, all it is used for, does not see). */
+template <class ArrayT>
+bool referencedBounds(const ArrayT& array, const MeshWelding& welding, osg::BoundingBoxd& box)
+{
+    if constexpr (std::is_same_v<ArrayT, osg::Vec3Array>)
+    {
+        if (welding.everyVertexUsed)
+        {
+            osg::Vec3f low, high;
+            if (!detail::finiteBox(array.empty() ? nullptr : &array.front(), array.size(), low, high)) return false;
+            box._min = osg::Vec3d(low);
+            box._max = osg::Vec3d(high);
+            return true;
+        }
+    }
+    return finiteBounds(array, welding, box);
+}
+
 /** Whether every welded vertex of @p array is still within @p distance of the first vertex
- *  of its group (the one whose position the mesh vertex has, as the welder compares). */
+ *  of its group (the one whose position the mesh vertex has, as the welder compares): the
+ *  others (MeshWelding::weldedAway) are the first of their group. */
 template <class ArrayT>
 bool weldsHold(const ArrayT& array, const MeshWelding& welding, double distance)
 {
     const double limit = distance * distance;
-    for (std::size_t i = 0; i < welding.weldedOf.size(); ++i)
+    for (const std::uint32_t i : welding.weldedAway)
     {
-        const std::uint32_t w = welding.weldedOf[i];
-        if (w >= MeshWelding::kNonFinite) continue;
-        const std::uint32_t first = welding.sourceOf[w];
-        if (first != i && (toVec3d(array[i]) - toVec3d(array[first])).length2() > limit) return false;
+        const std::uint32_t first = welding.sourceOf[welding.weldedOf[i]];
+        if ((toVec3d(array[i]) - toVec3d(array[first])).length2() > limit) return false;
     }
     return true;
+}
+
+/** Mesh vertex v at input vertex sourceOf[v]; float positions are copied as they are (the
+ *  round trip through double that other types take changes no finite float). */
+template <class ArrayT>
+void gatherPositions(const ArrayT& array, const MeshWelding& welding, std::vector<osg::Vec3f>& out)
+{
+    out.resize(welding.sourceOf.size());
+    const std::uint32_t* source = welding.sourceOf.data();
+    for (std::size_t v = 0; v < out.size(); ++v)
+    {
+        if constexpr (std::is_same_v<ArrayT, osg::Vec3Array>)
+            out[v] = array[source[v]];
+        else
+        {
+            const osg::Vec3d p = toVec3d(array[source[v]]);
+            out[v].set(float(p.x()), float(p.y()), float(p.z()));
+        }
+    }
 }
 
 /** The positions and welding distance of @p out from @p array, if the welding holds. */
@@ -543,16 +692,11 @@ bool refreshPositions(const ArrayT& array, const MeshWelding& welding, MeshAdjac
 {
     if (array.size() != welding.weldedOf.size()) return false;
     osg::BoundingBoxd box;
-    if (!finiteBounds(array, welding, box)) return false;
+    if (!referencedBounds(array, welding, box)) return false;
     const double distance = box.valid() ? welding.weldTolerance * (box._max - box._min).length() : 0.0;
     if (!weldsHold(array, welding, distance)) return false;
     out.report.weldDistance = distance;
-    out.positions.resize(welding.sourceOf.size());
-    for (std::size_t v = 0; v < welding.sourceOf.size(); ++v)
-    {
-        const osg::Vec3d p = toVec3d(array[welding.sourceOf[v]]);
-        out.positions[v].set(float(p.x()), float(p.y()), float(p.z()));
-    }
+    gatherPositions(array, welding, out.positions);
     return true;
 }
 

@@ -6,6 +6,8 @@
 #include <osgShadowSilhouette/MeshCache>
 #include <osgShadowSilhouette/HalfEdgeMesh>
 
+#include "VertexBounds.h"
+
 #include <OpenThreads/ScopedLock>
 #include <osg/Math>
 
@@ -234,13 +236,16 @@ bool spanningPlane(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& sp
  *  most w times the area of a plane figure of diameter D, pi D^2 / 4: six times its volume at
  *  most 3 pi 1e-6 D^3. The bound is taken twice over, far above any rounding. */
 template <typename Vec>
-bool provesNotFlat(const std::vector<Vec>& points, const MeshCache::NotFlat& witness)
+bool provesNotFlat(const std::vector<Vec>& points, const MeshCache::NotFlat& witness, const Vec* box)
 {
     for (std::uint32_t i : witness)
         if (i >= points.size()) return false;
     Vec low = points.front(), high = points.front();
-    for (const Vec& v : points)
-        for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], v[k]), high[k] = std::max(high[k], v[k]);
+    if (box)
+        low = box[0], high = box[1];
+    else
+        for (const Vec& v : points)
+            for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], v[k]), high[k] = std::max(high[k], v[k]);
     const double diagonal = (osg::Vec3d(high) - osg::Vec3d(low)).length();
     const osg::Vec3d a(points[witness[0]]), b(points[witness[1]]), c(points[witness[2]]), d(points[witness[3]]);
     const double sixVolume = std::abs(((b - a) ^ (c - a)) * (d - a));
@@ -248,12 +253,13 @@ bool provesNotFlat(const std::vector<Vec>& points, const MeshCache::NotFlat& wit
 }
 
 /** spanningPlane(), answered no at once while @p witness, the four points that showed the last
- *  set of points of the geometry not flat, still proves it (provesNotFlat()). */
+ *  set of points of the geometry not flat, still proves it (provesNotFlat(), given the
+ *  points' @p box, low and high, if not null). */
 template <typename Vec>
 bool spanningPlaneOrWitness(const std::vector<Vec>& points, std::array<osg::Vec3d, 3>& spanning,
-                            std::optional<MeshCache::NotFlat>& witness)
+                            std::optional<MeshCache::NotFlat>& witness, const Vec* box = nullptr)
 {
-    if (witness && provesNotFlat(points, *witness)) return false;
+    if (witness && provesNotFlat(points, *witness, box)) return false;
     witness.reset();
     return spanningPlane(points, spanning, witness);
 }
@@ -279,11 +285,15 @@ MeshCache::FiniteEntry MeshCache::vertexFacts(const osg::Geometry& geometry)
     entry.geometry = &geometry;
     entry.vertices = vertices;
     entry.verticesModified = vertices ? vertices->getModifiedCount() : 0u;
-    entry.finite = !vertices || allComponentsFinite(*vertices);
+    const auto* v3 = dynamic_cast<const osg::Vec3Array*>(vertices);
+    osg::Vec3f box[2]; // a float array's finiteness and box in one pass
+    entry.finite =
+        !vertices || (v3 ? detail::finiteBox(v3->empty() ? nullptr : &v3->front(), v3->size(), box[0], box[1])
+                         : allComponentsFinite(*vertices));
     if (entry.finite && vertices)
     {
-        if (const auto* v3 = dynamic_cast<const osg::Vec3Array*>(vertices))
-            entry.flat = spanningPlaneOrWitness(v3->asVector(), entry.spanning, witness);
+        if (v3)
+            entry.flat = spanningPlaneOrWitness(v3->asVector(), entry.spanning, witness, box);
         else if (const auto* v3d = dynamic_cast<const osg::Vec3dArray*>(vertices))
             entry.flat = spanningPlaneOrWitness(v3d->asVector(), entry.spanning, witness);
         entry.notFlat = witness;

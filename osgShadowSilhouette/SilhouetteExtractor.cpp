@@ -6,6 +6,7 @@
 #include <osgShadowSilhouette/SilhouetteExtractor>
 
 #include <algorithm>
+#include <cstring>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -163,7 +164,31 @@ void capSizes(CastMode mode, std::size_t faces, std::size_t lit, std::size_t& li
 }
 
 #if defined(__SSE2__)
-/** Two faces per step: (x*lx + z*lz) + (y*ly + w*lw) in SSE2, the order facesLight() uses. */
+/** Per mask of four faces (bit i: face i toward the light), their four bytes of `lit` (0 or 1,
+ *  the first face in the lowest byte) as one little-endian word. */
+struct LitWords
+{
+    std::uint32_t word[16];
+    constexpr LitWords() : word()
+    {
+        for (unsigned mask = 0; mask < 16; ++mask)
+            for (unsigned i = 0; i < 4; ++i) word[mask] |= ((mask >> i) & 1u) << (8 * i);
+    }
+};
+constexpr LitWords kLitWords;
+
+/** Whether each of the two faces at @p p faces the light (bit 0 the first, bit 1 the second):
+ *  (x*lx + z*lz) + (y*ly + w*lw) > 0 in SSE2, the order facesLight() uses. */
+inline int litPair(const double* p, __m128d lxy, __m128d lzw)
+{
+    // s = (x*lx + z*lz, y*ly + w*lw) for each of the two faces
+    const __m128d s0 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p), lxy), _mm_mul_pd(_mm_loadu_pd(p + 2), lzw));
+    const __m128d s1 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p + 4), lxy), _mm_mul_pd(_mm_loadu_pd(p + 6), lzw));
+    const __m128d dots = _mm_add_pd(_mm_unpacklo_pd(s0, s1), _mm_unpackhi_pd(s0, s1));
+    return _mm_movemask_pd(_mm_cmpgt_pd(dots, _mm_setzero_pd()));
+}
+
+/** Four faces per step (two pairs in SSE2, litPair()), their bytes written as one word. */
 std::size_t classifyPlanes(const osg::Vec4d* planes, std::size_t count, const osg::Vec4d& light,
                            std::uint8_t* out)
 {
@@ -171,18 +196,12 @@ std::size_t classifyPlanes(const osg::Vec4d* planes, std::size_t count, const os
     const double* p = planes->ptr();
     const __m128d lxy = _mm_set_pd(light.y(), light.x());
     const __m128d lzw = _mm_set_pd(light.w(), light.z());
-    const __m128d zero = _mm_setzero_pd();
     std::size_t litCount = 0, f = 0;
-    for (; f + 2 <= count; f += 2, p += 8)
+    for (; f + 4 <= count; f += 4, p += 16)
     {
-        // s = (x*lx + z*lz, y*ly + w*lw) for each of the two faces
-        __m128d s0 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p), lxy), _mm_mul_pd(_mm_loadu_pd(p + 2), lzw));
-        __m128d s1 = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(p + 4), lxy), _mm_mul_pd(_mm_loadu_pd(p + 6), lzw));
-        __m128d dots = _mm_add_pd(_mm_unpacklo_pd(s0, s1), _mm_unpackhi_pd(s0, s1));
-        const int mask = _mm_movemask_pd(_mm_cmpgt_pd(dots, zero));
-        out[f] = mask & 1;
-        out[f + 1] = mask >> 1;
-        litCount += (mask & 1) + (mask >> 1);
+        const std::uint32_t word = kLitWords.word[litPair(p, lxy, lzw) | (litPair(p + 8, lxy, lzw) << 2)];
+        std::memcpy(out + f, &word, sizeof word);
+        litCount += (word * 0x01010101u) >> 24; // the sum of its four bytes
     }
     for (; f < count; ++f)
     {
