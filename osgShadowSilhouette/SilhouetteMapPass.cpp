@@ -11,6 +11,7 @@
 #include <osg/Depth>
 #include <osg/Geode>
 #include <osg/Image>
+#include <osg/PolygonMode>
 #include <osgUtil/CullVisitor>
 
 #include <algorithm>
@@ -120,6 +121,16 @@ private:
 
 namespace {
 
+/** What of a caster's own state the edges found on the GPU (drawn under the caster's state
+ *  sets, GpuEdges) must not take: its alpha test and polygon mode (the texture on unit 0, the
+ *  map the stages read, each camera binds `OVERRIDE`). */
+void overrideCasterState(osg::StateSet& ss)
+{
+    ss.setMode(GL_ALPHA_TEST, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    ss.setAttribute(new osg::PolygonMode(osg::PolygonMode::FRONT_AND_BACK, osg::PolygonMode::FILL),
+                    osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+}
+
 /** The state of a pass over the edge lines: the silhouette-map vertex and geometry stages with
  *  fragment stage `fragment`; no depth test, culling, blending or lighting. */
 osg::ref_ptr<osg::StateSet> edgePassState(const char* name, const char* fragment)
@@ -133,6 +144,7 @@ osg::ref_ptr<osg::StateSet> edgePassState(const char* name, const char* fragment
     ss->setAttributeAndModes(program.get(), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     for (GLenum mode : {GLenum(GL_DEPTH_TEST), GLenum(GL_CULL_FACE), GLenum(GL_BLEND), GLenum(GL_LIGHTING)})
         ss->setMode(mode, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    overrideCasterState(*ss);
     return ss;
 }
 
@@ -167,6 +179,7 @@ osg::ref_ptr<osg::StateSet> SilhouetteMapPass::createDistanceStateSet()
     ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), overrideOn);
     for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_BLEND), GLenum(GL_LIGHTING)})
         ss->setMode(mode, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    overrideCasterState(*ss);
     return ss;
 }
 
@@ -277,7 +290,9 @@ void SilhouetteMapPass::createNeighbourhoodPass()
     c.setClearMask(0); // ClearNeighbourhood clears the integer buffer
     c.setStateSet(_neighbourhoodShared ? new osg::StateSet(*_neighbourhoodShared, osg::CopyOp::SHALLOW_COPY)
                                        : new osg::StateSet);
-    c.getStateSet()->setTextureAttributeAndModes(0, _texture.get(), osg::StateAttribute::ON);
+    // OVERRIDE: the casters' own textures on unit 0 do not replace it under the GPU's edges.
+    c.getStateSet()->setTextureAttributeAndModes(0, _texture.get(),
+                                                 osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     c.setViewport(0, 0, _mapSize + 1, _mapSize + 1);
     c.setViewMatrix(osg::Matrixd::identity());
     c.attach(osg::Camera::COLOR_BUFFER, _neighbourhoodTexture.get());
@@ -420,7 +435,7 @@ void SilhouetteMapPass::cull(osgUtil::CullVisitor& cv, const LightFrustum& frust
     _camera->setProjectionMatrix(frustum.projection);
     osg::StateSet* ss = _camera->getStateSet();
     if (ss->getTextureAttribute(0, osg::StateAttribute::TEXTURE) != depthTexture)
-        ss->setTextureAttributeAndModes(0, depthTexture, osg::StateAttribute::ON);
+        ss->setTextureAttributeAndModes(0, depthTexture, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     _camera->accept(cv);
     if (_depthComparison) return; // HYBRID's edge mask reads the map itself
     if (!_neighbourhoodCamera) createNeighbourhoodPass();

@@ -201,22 +201,21 @@ class GpuExtractionOnCorpus : public testing::TestWithParam<std::tuple<Model, Mo
 /** Cases (model/mode) where the GPU's geometry misses the mode's bound or differs from the
  *  CPU's in more than kGpuCpuDiffer pixels: the measured numbers and why. */
 const std::map<std::string, std::string> kKnownGpuDifferences = {
-    {"SpiderObj/silhouette",
-     "0.3457% and 0.3914% against the CPU's 0.0498% and 0.0242% (543 and 624 pixels differing): besides outline "
-     "pixels, a filled patch on the body's side toward the light's terminator; the cause is not found yet (the "
-     "volumes from the same adjacency agree, 1 and 2 pixels)"},
     {"SpiderStl/silhouette",
-     "0.0689% against the CPU's 0.0613% under the sun, 86 pixels differing (4 under the point light): not found yet"},
-    {"Test3ds/silhouette",
-     "0.0314% against the CPU's 0.0010% under the sun, 58 pixels differing (0 under the point light): not found yet"},
+     "0.0689% against the CPU's 0.0613% under the sun, 86 pixels differing (4 under the point light), both "
+     "within SILHOUETTE_MAP's bound: a dense caster whose edges cross texels by the several, where the last edge "
+     "drawn keeps its point and the GPU draws them in another order than the CPU; not proven to be all of it"},
     {"Regression3429812/volume",
      "0.032% and 0.083% against the CPU's 0.0057% and 0.0077%: the model stands 200 radii from its "
      "frame's origin, and the GPU's sides take the eye pass's float rounding of such positions, where the CPU "
      "draws its volumes about the caster's centre (ShadowVolumeGroup, FAR_ORIGIN_RADII): outline pixels"},
 };
 
-/** Pixels of a light's mask where the GPU's and the CPU's geometry may disagree. */
-constexpr long long kGpuCpuDiffer = 20; // measured up to 16 (Teapots, SHADOW_VOLUME, point light)
+/** Pixels of a light's mask where the GPU's and the CPU's geometry may disagree: volumes and
+ *  HYBRID's edge masks (measured up to 16: Teapots, SHADOW_VOLUME, point light), and
+ *  SILHOUETTE_MAP's maps, whose texels keep the point of the last edge drawn across them, in
+ *  another order on the GPU (measured up to 27: SpiderObj, point light). */
+constexpr long long kGpuCpuDiffer = 20, kGpuCpuDifferSilhouette = 30;
 
 TEST_P(GpuExtractionOnCorpus, MatchesTheCpuAndTheReference)
 {
@@ -244,7 +243,8 @@ TEST_P(GpuExtractionOnCorpus, MatchesTheCpuAndTheReference)
         std::printf("corpus %s gpu wrong_pct=%.4f cpu wrong_pct=%.4f differing=%lld\n",
                     caseKey(model.name, mode.name, light).c_str(), c.wrongPct, onCpu.wrongPct, differ);
         if (known != kKnownGpuDifferences.end()) continue;
-        EXPECT_LE(differ, kGpuCpuDiffer) << "mask pixels where the GPU's geometry and the CPU's disagree";
+        EXPECT_LE(differ, std::string(mode.name) == "silhouette" ? kGpuCpuDifferSilhouette : kGpuCpuDiffer)
+            << "mask pixels where the GPU's geometry and the CPU's disagree";
         // Where the CPU's geometry meets the bound, so does the GPU's.
         if (onCpu.wrongPct <= mode.boundPct)
         {
