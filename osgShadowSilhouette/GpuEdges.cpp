@@ -34,7 +34,8 @@ std::size_t GpuEdges::cull(osgUtil::CullVisitor& cv, osg::StateSet& pass, const 
 {
     const std::unordered_map<const osg::Drawable*, const Caster*> taken = takenByDrawable(casters);
     if (taken.empty() || !cullCasters) return 0;
-    cv.pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF);
+    // The view's eye still chooses the LODs, as in the depth pass (CasterCollector's choice).
+    cv.pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF_INHERIT_VIEWPOINT);
     cullCasters(&pass);
     cv.popModelViewMatrix();
     osgUtil::RenderBin* bin = cv.getCurrentRenderBin();
