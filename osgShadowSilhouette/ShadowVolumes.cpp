@@ -43,6 +43,7 @@ class CasterBoundCallback : public osg::Drawable::ComputeBoundingBoxCallback
 public:
     explicit CasterBoundCallback(const osg::BoundingBox& box) : _box(box) {}
     osg::BoundingBox computeBound(const osg::Drawable&) const override { return _box; }
+    void setBox(const osg::BoundingBox& box) { _box = box; }
 
 private:
     osg::BoundingBox _box;
@@ -66,7 +67,7 @@ public:
     osg::BoundingBox computeBoundingBox() const override { return osg::BoundingBox(); }
 };
 
-osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawElementsUInt* indices,
+osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::PrimitiveSet* indices,
                                            const osg::BoundingBox& box)
 {
     osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
@@ -78,6 +79,20 @@ osg::ref_ptr<osg::Geometry> volumeGeometry(osg::Vec4Array* vertices, osg::DrawEl
     g->setComputeBoundingBoxCallback(new CasterBoundCallback(box));
     g->setCullingActive(false);
     return g;
+}
+
+/** Points @p geometry (made on the first call) at @p vertices and @p indices within @p box. */
+void setVolumeGeometry(osg::ref_ptr<osg::Geometry>& geometry, osg::Vec4Array* vertices, osg::PrimitiveSet* indices,
+                       const osg::BoundingBox& box)
+{
+    if (!geometry)
+    {
+        geometry = volumeGeometry(vertices, indices, box);
+        return;
+    }
+    if (geometry->getVertexArray() != vertices) geometry->setVertexArray(vertices);
+    static_cast<CasterBoundCallback*>(geometry->getComputeBoundingBoxCallback())->setBox(box);
+    geometry->dirtyBound();
 }
 
 /** Writes into @p out the volume's @p vertices about @p origin: the finite ones (w = 1) less
@@ -93,21 +108,6 @@ void verticesAbout(const osg::Vec4Array& vertices, const osg::Vec3d& origin, osg
         else
             out[i].set(float(double(v.x()) - origin.x()), float(double(v.y()) - origin.y()),
                        float(double(v.z()) - origin.z()), 1.0f);
-    }
-    out.dirty();
-}
-
-/** Refills @p out with the indices of @p ranges of @p volume, one after the other. */
-void assignRanges(const ShadowVolume& volume, std::initializer_list<IndexRange> ranges, osg::DrawElementsUInt& out)
-{
-    std::size_t count = 0;
-    for (const IndexRange& range : ranges) count += range.count;
-    out.clear(); // keeps its capacity
-    out.reserve(count);
-    for (const IndexRange& range : ranges)
-    {
-        const auto first = volume.indices.begin() + range.first;
-        out.insert(out.end(), first, first + range.count);
     }
     out.dirty();
 }
@@ -155,14 +155,15 @@ bool mirrors(const osg::Matrixd& m)
     return (x ^ y) * z < 0.0;
 }
 
-/** The light cap's triangles by their winding against their face's: kept (a face toward the
- *  light) and turned (a face away from it that a TWO_SIDED rule turns toward it). Only a cap
- *  of every face can hold turned ones (SilhouetteExtractor's writeCaps()). */
-void splitLightCap(const ShadowVolume& volume, std::size_t faces, const std::vector<std::uint8_t>& lit,
-                   osg::DrawElementsUInt& kept, osg::DrawElementsUInt& turned)
+/** The light cap's triangles (@p lightCap of @p indices) by their winding against their
+ *  face's: kept (a face toward the light) and turned (a face away from it that a TWO_SIDED
+ *  rule turns toward it). Only a cap of every face can hold turned ones (SilhouetteExtractor's
+ *  writeCaps()). */
+void splitLightCap(const std::vector<GLuint>& indices, const IndexRange& lightCap, std::size_t faces,
+                   const std::vector<std::uint8_t>& lit, osg::DrawElementsUInt& kept, osg::DrawElementsUInt& turned)
 {
-    const auto first = volume.indices.begin() + volume.lightCap.first;
-    const std::size_t count = volume.lightCap.count / 3;
+    const auto first = indices.begin() + lightCap.first;
+    const std::size_t count = lightCap.count / 3;
     const bool everyFace = count == faces && lit.size() == faces;
     for (std::size_t k = 0; k < count; ++k)
     {
@@ -198,6 +199,67 @@ bool needsZFail(const osg::BoundingSphered& caster, const osg::Vec4d& light, con
     const double radial = (toEye - axis * t).length();
     return radial <= r + std::max(0.0, t) * tanHalf;
 }
+
+/** One range of a shared index array, drawn from that array's element buffer: a volume's
+ *  sides, dark cap and light cap are written once per build into one array (the sides and
+ *  dark cap next to each other) and drawn as ranges of it, not copied into primitive sets
+ *  of their own. */
+class ShadowVolumeGroup::RangeDraw : public osg::PrimitiveSet
+{
+public:
+    RangeDraw() : osg::PrimitiveSet(PrimitiveType, GL_TRIANGLES) {}
+    explicit RangeDraw(osg::DrawElementsUInt* indices) : RangeDraw() { _indices = indices; }
+    RangeDraw(const RangeDraw& r, const osg::CopyOp& op)
+        : osg::PrimitiveSet(r, op), _indices(r._indices), _first(r._first), _count(r._count)
+    {
+    }
+    META_Object(osgShadowSilhouette, RangeDraw);
+
+    void setRange(const IndexRange& range)
+    {
+        _first = range.first;
+        _count = range.count;
+    }
+
+    void draw(osg::State& state, bool useVertexBufferObjects) const override
+    {
+        if (_count == 0) return;
+        osg::VertexArrayState* vas = state.getCurrentVertexArrayState();
+        osg::GLBufferObject* ebo =
+            useVertexBufferObjects ? _indices->getOrCreateGLBufferObject(state.getContextID()) : nullptr;
+        if (!ebo)
+        {
+            vas->unbindElementBufferObject();
+            glDrawElements(_mode, GLsizei(_count), GL_UNSIGNED_INT, &(*_indices)[_first]);
+            return;
+        }
+        vas->bindElementBufferObject(ebo);
+        const GLsizeiptr offset = ebo->getOffset(_indices->getBufferIndex()) + GLsizeiptr(_first * sizeof(GLuint));
+        glDrawElements(_mode, GLsizei(_count), GL_UNSIGNED_INT, reinterpret_cast<const GLvoid*>(offset));
+    }
+    void accept(osg::PrimitiveFunctor& functor) const override
+    {
+        if (_count) functor.drawElements(_mode, GLsizei(_count), &(*_indices)[_first]);
+    }
+    void accept(osg::PrimitiveIndexFunctor& functor) const override
+    {
+        if (_count) functor.drawElements(_mode, GLsizei(_count), &(*_indices)[_first]);
+    }
+    unsigned int index(unsigned int pos) const override { return (*_indices)[_first + pos]; }
+    unsigned int getNumIndices() const override { return _count; }
+    void offsetIndices(int offset) override
+    {
+        for (std::uint32_t i = _first; i < _first + _count; ++i) (*_indices)[i] += offset;
+        _indices->dirty();
+    }
+    // The element buffer is the shared array's: these reach it.
+    void resizeGLObjectBuffers(unsigned int maxSize) override { _indices->resizeGLObjectBuffers(maxSize); }
+    void releaseGLObjects(osg::State* state) const override { _indices->releaseGLObjects(state); }
+
+private:
+    osg::ref_ptr<osg::DrawElementsUInt> _indices = new osg::DrawElementsUInt(GL_TRIANGLES);
+    std::uint32_t _first = 0, _count = 0;
+};
 
 ShadowVolumeGroup::ShadowVolumeGroup(unsigned int testRef, unsigned int testMask, unsigned int writeMask)
     : _root(new osg::Group)
@@ -274,6 +336,13 @@ ShadowVolumeGroup::Entry ShadowVolumeGroup::createEntry() const
 
 void ShadowVolumeGroup::assembleSwitch(Entry& e, const osg::Vec3d& origin) const
 {
+    const bool sameCaps =
+        std::equal(e.lightCaps.begin(), e.lightCaps.end(), e.assembledCaps.begin(), e.assembledCaps.end(),
+                   [](const osg::ref_ptr<osg::Geometry>& a, osg::Geometry* b) { return a == b; });
+    if (e.zSwitch->getNumChildren() == 2 && origin == e.assembledOrigin && sameCaps) return;
+    e.assembledOrigin = origin;
+    e.assembledCaps.clear();
+    for (const osg::ref_ptr<osg::Geometry>& cap : e.lightCaps) e.assembledCaps.push_back(cap.get());
     // A transform only where the volume is drawn about a centre: the other casters' volumes
     // keep one model-view matrix a draw, as before.
     const auto centredAt = [&origin](osg::Drawable* drawable) -> osg::ref_ptr<osg::Node> {
@@ -324,54 +393,60 @@ void ShadowVolumeGroup::rebuild(Entry& e, const osg::Vec4d& light) const
     fillArrays(e, origin);
     osg::Vec4Array* centred = origin != osg::Vec3d() ? e.centred.get() : e.vertices.get(); // about 0: the same
     const osg::BoundingBox centredBox(box._min - osg::Vec3(origin), box._max - osg::Vec3(origin));
-    e.zfail = volumeGeometry(centred, e.sidesAndDarkCap.get(), centredBox);
-    e.lightCaps.clear();
-    const auto addCap = [&](osg::DrawElementsUInt* indices, osg::StateSet* state) {
-        e.lightCaps.push_back(volumeGeometry(e.vertices.get(), indices, box));
-        e.lightCaps.back()->setStateSet(state);
-    };
+    setVolumeGeometry(e.zfail, centred, e.sidesAndDarkCap.get(), centredBox);
+    setVolumeGeometry(e.zpass, centred, e.sides.get(), centredBox);
     // A mirroring matrix turns the volume inside out in the window: its counts would be
     // negative and cancel another caster's where their shadows overlap. The volume's
     // FrontFace turns it back, so that GL's front faces are those its triangles' own
     // counter-clockwise winding faces, as without the mirror.
     const bool mirrored = mirrors(e.caster.world);
     e.zSwitch->setStateSet(_frontFaceStates[mirrored].get());
-    // The sides of a face the eye pass culls, named by the face's own winding as the volume's
-    // FrontFace names them (a mirror swaps the window's).
-    const unsigned char both = Caster::CULLS_CCW | Caster::CULLS_CW;
-    const unsigned char culled =
-        mirrored && e.caster.culledWindings != both ? e.caster.culledWindings ^ both : e.caster.culledWindings;
-    if (!culled)
-    {
-        assignRanges(e.volume, {e.volume.lightCap}, *e.lightCap);
-        addCap(e.lightCap.get(), _lightCapState.get());
-    }
-    else
-    {
-        osg::ref_ptr<osg::DrawElementsUInt> kept = new osg::DrawElementsUInt(GL_TRIANGLES),
-                                            turned = new osg::DrawElementsUInt(GL_TRIANGLES);
-        splitLightCap(e.volume, mesh.faces.size(), e.silhouette.lit, *kept, *turned);
-        for (osg::DrawElementsUInt* part : {kept.get(), turned.get()})
-        {
-            if (part->empty()) continue;
-            // The sides of the cap's triangles from which the eye sees their face's culled
-            // side: the face's own, or the other for a turned triangle.
-            const unsigned char seenCulled = part == kept.get() || culled == both ? culled : (culled ^ both);
-            const bool ccw = seenCulled == Caster::CULLS_CCW;
-            if (seenCulled != both) addCap(part, _capCullStates[1][ccw ? 0 : 1].get());        // leaves them out
-            addCap(part, seenCulled == both ? nullptr : _capCullStates[0][ccw ? 1 : 0].get()); // keeps only them
-        }
-    }
-    e.zpass = volumeGeometry(centred, e.sides.get(), centredBox);
+    setLightCaps(e, box, mirrored);
     assembleSwitch(e, origin);
     e.transform->setMatrix(e.caster.world);
 
     const osg::BoundingSphere local(box);
     e.worldBound = osg::BoundingSphered(osg::Vec3d(local.center()) * e.caster.world, 0.0);
-    const double scale = std::max({osg::Vec3d(e.caster.world(0, 0), e.caster.world(0, 1), e.caster.world(0, 2)).length(),
-                                   osg::Vec3d(e.caster.world(1, 0), e.caster.world(1, 1), e.caster.world(1, 2)).length(),
-                                   osg::Vec3d(e.caster.world(2, 0), e.caster.world(2, 1), e.caster.world(2, 2)).length()});
+    const double scale =
+        std::max({osg::Vec3d(e.caster.world(0, 0), e.caster.world(0, 1), e.caster.world(0, 2)).length(),
+                  osg::Vec3d(e.caster.world(1, 0), e.caster.world(1, 1), e.caster.world(1, 2)).length(),
+                  osg::Vec3d(e.caster.world(2, 0), e.caster.world(2, 1), e.caster.world(2, 2)).length()});
     e.worldBound.radius() = local.radius() * scale;
+}
+
+void ShadowVolumeGroup::setLightCaps(Entry& e, const osg::BoundingBox& box, bool mirrored) const
+{
+    // The sides of a face the eye pass culls, named by the face's own winding as the volume's
+    // FrontFace names them (a mirror swaps the window's).
+    const unsigned char both = Caster::CULLS_CCW | Caster::CULLS_CW;
+    const unsigned char culled =
+        mirrored && e.caster.culledWindings != both ? e.caster.culledWindings ^ both : e.caster.culledWindings;
+    e.lightCaps.clear();
+    if (!culled)
+    {
+        setVolumeGeometry(e.lightCapGeometry, e.vertices.get(), e.lightCap.get(), box);
+        e.lightCapGeometry->setStateSet(_lightCapState.get());
+        e.lightCaps.push_back(e.lightCapGeometry);
+        return;
+    }
+    const auto addCap = [&](osg::DrawElementsUInt* indices, osg::StateSet* state) {
+        e.lightCaps.push_back(volumeGeometry(e.vertices.get(), indices, box));
+        e.lightCaps.back()->setStateSet(state);
+    };
+    osg::ref_ptr<osg::DrawElementsUInt> kept = new osg::DrawElementsUInt(GL_TRIANGLES),
+                                        turned = new osg::DrawElementsUInt(GL_TRIANGLES);
+    splitLightCap(e.indices->asVector(), e.volume.lightCap, e.caster.mesh->getAdjacency().faces.size(),
+                  e.silhouette.lit, *kept, *turned);
+    for (osg::DrawElementsUInt* part : {kept.get(), turned.get()})
+    {
+        if (part->empty()) continue;
+        // The sides of the cap's triangles from which the eye sees their face's culled
+        // side: the face's own, or the other for a turned triangle.
+        const unsigned char seenCulled = part == kept.get() || culled == both ? culled : (culled ^ both);
+        const bool ccw = seenCulled == Caster::CULLS_CCW;
+        if (seenCulled != both) addCap(part, _capCullStates[1][ccw ? 0 : 1].get());        // leaves them out
+        addCap(part, seenCulled == both ? nullptr : _capCullStates[0][ccw ? 1 : 0].get()); // keeps only them
+    }
 }
 
 void ShadowVolumeGroup::fillArrays(Entry& e, const osg::Vec3d& origin)
@@ -379,21 +454,27 @@ void ShadowVolumeGroup::fillArrays(Entry& e, const osg::Vec3d& origin)
     if (!e.vertices)
     {
         e.vertices = new osg::Vec4Array;
-        e.sidesAndDarkCap = new osg::DrawElementsUInt(GL_TRIANGLES);
-        e.sides = new osg::DrawElementsUInt(GL_TRIANGLES);
-        e.lightCap = new osg::DrawElementsUInt(GL_TRIANGLES);
+        e.indices = new osg::DrawElementsUInt(GL_TRIANGLES);
+        e.indices->setElementBufferObject(new osg::ElementBufferObject);
+        e.sidesAndDarkCap = new RangeDraw(e.indices.get());
+        e.sides = new RangeDraw(e.indices.get());
+        e.lightCap = new RangeDraw(e.indices.get());
     }
-    // The volume's vertices go to the drawn array without a copy; the array's previous ones
-    // come back to the volume, whose next build overwrites them in place.
+    // The volume's vertices and indices go to the drawn arrays without a copy; the arrays'
+    // previous ones come back to the volume, whose next build overwrites them in place.
     e.vertices->asVector().swap(e.volume.vertices);
     e.vertices->dirty();
+    e.indices->asVector().swap(e.volume.indices);
+    e.indices->dirty();
     if (origin != osg::Vec3d())
     {
         if (!e.centred) e.centred = new osg::Vec4Array;
         verticesAbout(*e.vertices, origin, *e.centred);
     }
-    assignRanges(e.volume, {e.volume.sides, e.volume.darkCap}, *e.sidesAndDarkCap); // one draw, not two
-    assignRanges(e.volume, {e.volume.sides}, *e.sides);
+    const ShadowVolume& v = e.volume;
+    e.sidesAndDarkCap->setRange(IndexRange{v.sides.first, v.sides.count + v.darkCap.count}); // one draw, not two
+    e.sides->setRange(v.sides);
+    e.lightCap->setRange(v.lightCap);
 }
 
 unsigned int ShadowVolumeGroup::update(const std::vector<Caster>& casters, const osg::Vec4d& light)
@@ -537,7 +618,7 @@ bool volumeScissor(const osg::BoundingBoxd& caster, const osg::Vec4d& light, con
 std::size_t ShadowVolumeGroup::getTriangleCount() const
 {
     std::size_t n = 0;
-    for (const Entry& e : _entries) n += e.volume.triangleCount();
+    for (const Entry& e : _entries) n += e.indices ? e.indices->size() / 3 : 0; // the volume's indices are there
     return n;
 }
 

@@ -276,10 +276,11 @@ void SilhouetteExtractor::buildVolume(const MeshAdjacency& mesh, const Silhouett
     std::size_t lightFaces = 0, darkFaces = 0;
     capSizes(mode, mesh.faces.size(), silhouette.litFaceCount, lightFaces, darkFaces);
 
+    // Sides, dark cap, light cap: z-fail's sides and dark cap are one range.
     out.sides = IndexRange{ 0, std::uint32_t(6 * quads) };
-    out.lightCap = IndexRange{ out.sides.count, std::uint32_t(3 * lightFaces) };
-    out.darkCap = IndexRange{ out.lightCap.first + out.lightCap.count, std::uint32_t(3 * darkFaces) };
-    out.indices.resize(out.darkCap.first + out.darkCap.count);
+    out.darkCap = IndexRange{out.sides.count, std::uint32_t(3 * darkFaces)};
+    out.lightCap = IndexRange{out.darkCap.first + out.darkCap.count, std::uint32_t(3 * lightFaces)};
+    out.indices.resize(out.lightCap.first + out.lightCap.count);
 
     const std::uint32_t n = std::uint32_t(mesh.positions.size());
     std::uint32_t* base = out.indices.data();

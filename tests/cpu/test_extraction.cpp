@@ -201,9 +201,9 @@ TEST_P(ExtractionCase, StencilCountEqualsCastingFacesBetweenPointAndLight)
 TEST_P(ExtractionCase, RangesPartitionTheIndices)
 {
     EXPECT_EQ(0u, volume.sides.first);
-    EXPECT_EQ(volume.sides.count, volume.lightCap.first);
-    EXPECT_EQ(volume.lightCap.first + volume.lightCap.count, volume.darkCap.first);
-    EXPECT_EQ(volume.indices.size(), std::size_t(volume.darkCap.first + volume.darkCap.count));
+    EXPECT_EQ(volume.sides.count, volume.darkCap.first);
+    EXPECT_EQ(volume.darkCap.first + volume.darkCap.count, volume.lightCap.first);
+    EXPECT_EQ(volume.indices.size(), std::size_t(volume.lightCap.first + volume.lightCap.count));
     std::size_t quads = 0;
     for (auto m : silhouette.multiplicity) quads += m;
     EXPECT_EQ(6 * quads, volume.sides.count);
