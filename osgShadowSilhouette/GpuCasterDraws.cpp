@@ -160,8 +160,7 @@ std::vector<Caster> GpuCasterDraws::leftToCpu(const std::vector<Caster>& casters
     return out;
 }
 
-std::unordered_map<const osg::Drawable*, const Caster*>
-GpuCasterDraws::takenByDrawable(const std::vector<Caster>& casters) const
+GpuCasterDraws::TakenCasters GpuCasterDraws::takenByDrawable(const std::vector<Caster>& casters) const
 {
     std::unordered_map<const osg::Drawable*, const Caster*> taken;
     for (const Caster& caster : casters)

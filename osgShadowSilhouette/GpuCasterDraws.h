@@ -69,6 +69,8 @@ class GpuCasterDraws : public osg::Referenced
 public:
     /** Culls the shadowed scene's casters under a pass state set into the current bin. */
     using CullCasters = std::function<void(osg::StateSet* pass)>;
+    /** Casters taken here, by drawable (takenByDrawable()). */
+    using TakenCasters = std::unordered_map<const osg::Drawable*, const Caster*>;
 
     /** Whether every caster is taken here (true) or only the casters moved on the GPU (false,
      *  the default). */
@@ -81,6 +83,8 @@ public:
     /** @p casters with the ones taken here marked movedOnGpu, so that the CPU path leaves
      *  them out; in the list's order. */
     std::vector<Caster> leftToCpu(const std::vector<Caster>& casters) const;
+    /** The casters of @p casters taken here, by drawable (pointing into @p casters). */
+    TakenCasters takenByDrawable(const std::vector<Caster>& casters) const;
 
     void resizeGLObjectBuffers(unsigned int maxSize);
     void releaseGLObjects(osg::State* state = nullptr) const;
@@ -89,8 +93,6 @@ protected:
     GpuCasterDraws(CasterVertexStages* stages, AdjacencyDrawables* adjacency);
     ~GpuCasterDraws() override;
 
-    /** The casters of @p casters taken here, by drawable. */
-    std::unordered_map<const osg::Drawable*, const Caster*> takenByDrawable(const std::vector<Caster>& casters) const;
     /** After a pass's cull: each leaf under @p pass draws its caster's adjacency stand-in
      *  through its own vertex stage under its rule's state (ruleOf()), or nothing (not taken
      *  here). Returns the number of leaves kept. */

@@ -30,9 +30,8 @@ osg::ref_ptr<osg::StateSet> GpuEdges::createPass(Map map, osg::Uniform* light) c
 }
 
 std::size_t GpuEdges::cull(osgUtil::CullVisitor& cv, osg::StateSet& pass, const osg::Matrixd& view,
-                           const std::vector<Caster>& casters, const CullCasters& cullCasters)
+                           const TakenCasters& taken, const CullCasters& cullCasters)
 {
-    const std::unordered_map<const osg::Drawable*, const Caster*> taken = takenByDrawable(casters);
     if (taken.empty() || !cullCasters) return 0;
     // The view's eye still chooses the LODs, as in the depth pass (CasterCollector's choice).
     cv.pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF_INHERIT_VIEWPOINT);

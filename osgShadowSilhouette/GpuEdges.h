@@ -43,11 +43,12 @@ public:
      *  light's view space, shared by the light's maps). */
     osg::ref_ptr<osg::StateSet> createPass(Map map, osg::Uniform* light) const;
 
-    /** Within an edge camera's cull (its render stage current): culls the casters of
-     *  @p casters taken here under @p pass, with @p view (the light's view: world to light
-     *  view space) as their model-view. Returns the number of caster draws kept. */
-    std::size_t cull(osgUtil::CullVisitor& cv, osg::StateSet& pass, const osg::Matrixd& view,
-                     const std::vector<Caster>& casters, const CullCasters& cullCasters);
+    /** Within an edge camera's cull (its render stage current): culls the casters @p taken
+     *  (takenByDrawable() of the light's casters) under @p pass, with @p view (the light's
+     *  view: world to light view space) as their model-view. Returns the number of caster
+     *  draws kept. */
+    std::size_t cull(osgUtil::CullVisitor& cv, osg::StateSet& pass, const osg::Matrixd& view, const TakenCasters& taken,
+                     const CullCasters& cullCasters);
 
 protected:
     ~GpuEdges() override;

@@ -8,6 +8,7 @@
 #include <osg/BlendEquation>
 #include <osg/GLExtensions>
 #include <osg/BlendFunc>
+#include <osg/ColorMask>
 #include <osg/Depth>
 #include <osg/Geode>
 #include <osg/Image>
@@ -100,6 +101,7 @@ struct SilhouetteMapPass::GpuEdgePasses
     osg::ref_ptr<osg::Uniform> light = new osg::Uniform(shader::GPU_EDGE_LIGHT, osg::Vec4f());
     osg::ref_ptr<osg::StateSet> passes[detail::GpuEdges::MAP_COUNT];
     std::vector<Caster> casters; ///< empty: the GPU takes none of this cull's casters
+    detail::GpuEdges::TakenCasters taken; ///< those of `casters` it takes, by drawable
     osg::Matrixd view;
 };
 
@@ -122,12 +124,16 @@ private:
 namespace {
 
 /** What of a caster's own state the edges found on the GPU (drawn under the caster's state
- *  sets, GpuEdges) must not take: its alpha test and polygon mode (the texture on unit 0, the
- *  map the stages read, each camera binds `OVERRIDE`). */
+ *  sets, GpuEdges) must not take: its alpha, stencil and scissor tests, polygon mode and
+ *  colour mask (the texture on unit 0, the map the stages read, each camera binds
+ *  `OVERRIDE`). */
 void overrideCasterState(osg::StateSet& ss)
 {
-    ss.setMode(GL_ALPHA_TEST, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    const auto off = osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE;
+    for (GLenum mode : {GLenum(GL_ALPHA_TEST), GLenum(GL_STENCIL_TEST), GLenum(GL_SCISSOR_TEST)}) ss.setMode(mode, off);
     ss.setAttribute(new osg::PolygonMode(osg::PolygonMode::FRONT_AND_BACK, osg::PolygonMode::FILL),
+                    osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    ss.setAttribute(new osg::ColorMask(true, true, true, true),
                     osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
 }
 
@@ -375,18 +381,17 @@ void SilhouetteMapPass::setGpuEdges(detail::GpuEdges* gpu, CullCasters cullCaste
     _gpu->cullCasters = std::move(cullCasters);
 }
 
-detail::GpuEdges* SilhouetteMapPass::getGpuEdges() const
-{
-    return _gpu ? _gpu->gpu.get() : nullptr;
-}
-
 bool SilhouetteMapPass::updateEdges(const std::vector<Caster>& casters, const osg::Vec4d& light,
                                     const LightFrustum& frustum)
 {
-    _gpuEdgeCasters = 0;
-    if (_gpu) _gpu->casters.clear();
+    if (_gpu)
+    {
+        _gpu->casters.clear();
+        _gpu->taken.clear();
+    }
     if (!_gpu || !_gpu->gpu->takesAny(casters)) return _edges->update(casters, light);
     _gpu->casters = casters;
+    _gpu->taken = _gpu->gpu->takenByDrawable(_gpu->casters); // once for every map of the light
     _gpu->view = frustum.view;
     osg::Vec4d viewLight = light * frustum.view;
     if (viewLight.w() != 0.0) viewLight /= viewLight.w();
@@ -399,8 +404,7 @@ void SilhouetteMapPass::cullGpuEdges(osgUtil::CullVisitor& cv, int map)
     if (!_gpu || _gpu->casters.empty()) return;
     osg::ref_ptr<osg::StateSet>& pass = _gpu->passes[map];
     if (!pass) pass = _gpu->gpu->createPass(detail::GpuEdges::Map(map), _gpu->light.get());
-    const std::size_t culled = _gpu->gpu->cull(cv, *pass, _gpu->view, _gpu->casters, _gpu->cullCasters);
-    _gpuEdgeCasters = std::max(_gpuEdgeCasters, static_cast<unsigned int>(culled));
+    _gpu->gpu->cull(cv, *pass, _gpu->view, _gpu->taken, _gpu->cullCasters);
 }
 
 void SilhouetteMapPass::setDepthComparison(bool compare)
