@@ -3,7 +3,9 @@
 // masks) and the shadow volumes (GpuVolumes.h), on a scene built for what the corpus does not
 // hold: a closed caster under a mirroring transform (the facing rule's MIRRORED bit), an open
 // curled sheet (TWO_SIDED), and a caster behind the eye whose shadow falls in view (the casters
-// are culled without the view frustum). Every caster's on the GPU (GPU_EXTRACTION_ALL_CASTERS)
+// are culled without the view frustum), and an LOD whose child the eye chooses (the lights
+// stand beyond its switch distance: culled from the light's viewpoint, the GPU's edges would
+// be the far child's while the depth map holds the near one). Every caster's on the GPU (GPU_EXTRACTION_ALL_CASTERS)
 // against the exact reference and against the CPU's of the same technique, pixel for pixel,
 // a sun and a point light. (tests/gl/test_caster_vertex_stage.cpp and
 // test_animated_casters.cpp: casters moved by their own vertex stages; tests/corpus: real
@@ -13,6 +15,7 @@
 #include "ModeBounds.h"
 
 #include <osg/Geode>
+#include <osg/LOD>
 #include <osg/MatrixTransform>
 #include <osg/Texture2D>
 
@@ -70,6 +73,16 @@ osshar::PreparedScene scene()
     // Behind the eye (z = 6), its shadow in view.
     ground->addDrawable(osshar::makeBox(osg::Vec3(-0.6f, -0.5f, 8.0f), osg::Vec3(0.8f, 0.6f, 0.5f)).get());
     s.content->addChild(ground.get());
+    // The near child within 7 of the eye (5.6 away), the far one beyond (the point light is 11.6 away).
+    osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+    lod->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
+    lod->setCenter(osg::Vec3(-1.5f, -1.2f, 0.7f));
+    osg::ref_ptr<osg::Geode> nearChild = new osg::Geode, farChild = new osg::Geode;
+    nearChild->addDrawable(osshar::makeCylinder(osg::Vec3(-1.5f, -1.2f, 0.3f), 0.35f, 0.8f, 20).get());
+    farChild->addDrawable(osshar::makeBox(osg::Vec3(-1.2f, -1.4f, 0.9f), osg::Vec3(1.0f, 0.4f, 1.2f)).get());
+    lod->addChild(nearChild.get(), 0.0f, 7.0f);
+    lod->addChild(farChild.get(), 7.0f, 1e6f);
+    s.content->addChild(lod.get());
     // A torus mirrored in x: its faces wind clockwise in the eye's frame.
     osg::ref_ptr<osg::MatrixTransform> mirror =
         new osg::MatrixTransform(osg::Matrix::scale(-1, 1, 1) * osg::Matrix::translate(0.4f, 1.2f, 1.2f));
