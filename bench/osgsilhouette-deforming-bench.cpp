@@ -2,7 +2,7 @@
  * technique, against the same caster held still (docs/benchmarks.md, "Deforming casters").
  *
  *   osgsilhouette-deforming-bench [--casters bunny,torus1m] [--techniques shadowmap,silhouette,...]
- *       [--size W H] [--map-size N] [--frames N] [--warmup N] [--rounds N] [--out-dir DIR]
+ *       [--size W H] [--map-size N] [--frames N] [--warmup N] [--rounds N] [--out-dir DIR] [--shader]
  *
  * Each caster stands on a ground under one directional light. In the variant "deforming" an
  * update callback moves every vertex of the caster by a small travelling wave each frame, then
@@ -14,6 +14,12 @@
  * viewer.frame() with glFinish (update, cull, draw). Both variants of a (caster, technique)
  * run back to back on one technique, in alternating order from round to round, so that drift
  * of a shared machine falls on both.
+ *
+ * With --shader the caster's own vertex shader writes the same wave instead (its program
+ * marked ShadowMovesVertices, its vertex array never changes): "deforming" advances the
+ * wave's phase uniform, "still" holds it. The technique finds such a caster's silhouette
+ * edges and extrudes its volumes on the GPU, so its cull delta is what that costs the CPU
+ * and its frame delta what it costs the whole frame. Its rows name the caster "NAME+shader".
  *
  * Writes DIR/deforming.csv (one row per round, caster, technique and variant, medians over the
  * timed frames) and DIR/deforming.md, and prints the summary table (medians over rounds, with
@@ -27,8 +33,10 @@
 
 #include <osg/MatrixTransform>
 #include <osg/NodeVisitor>
+#include <osg/Program>
 #include <osg/Timer>
 #include <osg/TriangleFunctor>
+#include <osg/Uniform>
 #include <osgShadow/ShadowedScene>
 
 #include <algorithm>
@@ -60,7 +68,26 @@ struct Options
     unsigned int mapSize = 1024;
     int frames = 20, warmup = 3, rounds = 3;
     std::string outDir = "bench-deforming";
+    bool shader = false; ///< the wave in the caster's vertex shader (--shader)
 };
+
+/** The wave of --shader, in the caster's vertex stage (the contract of docs/animation.md:
+ *  gl_Position from gl_ModelViewProjectionMatrix and the moved object-space position). */
+const char* const WAVE_VERTEX = R"(#version 400 compatibility
+uniform float bench_phase;
+uniform float bench_amplitude;
+uniform float bench_waveNumber;
+void main()
+{
+    vec4 p = gl_Vertex;
+    p.z += bench_amplitude * sin(bench_waveNumber * (p.x + p.y + p.z) + bench_phase);
+    gl_Position = gl_ModelViewProjectionMatrix * p;
+    gl_FrontColor = gl_Color;
+}
+)";
+const char* const WAVE_FRAGMENT = R"(#version 400 compatibility
+void main() { gl_FragColor = gl_Color; }
+)";
 
 /** The travelling wave of the variant "deforming": each vertex moves along z by a function of
  *  its rest position and the frame number. A function of the position, not of the index, so
@@ -82,6 +109,26 @@ public:
     bool deforming = false;
     double lastMs = 0.0; ///< the last update's time writing the wave; 0 when still
 
+    /** Moves @p g in its own vertex stage (--shader): a program marked as moving vertices,
+     *  the wave's uniforms, and a bound that holds every pose. */
+    void moveInShader(osg::Geometry& g)
+    {
+        osg::ref_ptr<osg::Program> program = new osg::Program;
+        program->addShader(new osg::Shader(osg::Shader::VERTEX, WAVE_VERTEX));
+        program->addShader(new osg::Shader(osg::Shader::FRAGMENT, WAVE_FRAGMENT));
+        program->setUserValue(SilhouetteShadowTechnique::MOVES_VERTICES_USER_VALUE, true);
+        osg::StateSet* ss = g.getOrCreateStateSet();
+        ss->setAttributeAndModes(program.get(), osg::StateAttribute::ON);
+        _phase = new osg::Uniform("bench_phase", 0.0f);
+        ss->addUniform(_phase.get());
+        ss->addUniform(new osg::Uniform("bench_amplitude", _amplitude));
+        ss->addUniform(new osg::Uniform("bench_waveNumber", _waveNumber));
+        osg::BoundingBox box = g.getBoundingBox();
+        box.expandBy(box._min - osg::Vec3(0, 0, _amplitude));
+        box.expandBy(box._max + osg::Vec3(0, 0, _amplitude));
+        g.setInitialBound(box);
+    }
+
     void update(osg::NodeVisitor* nv, osg::Drawable* drawable) override
     {
         lastMs = 0.0;
@@ -89,6 +136,12 @@ public:
         if (!deforming || !g || !nv->getFrameStamp()) return;
         const osg::Timer_t t0 = osg::Timer::instance()->tick();
         const float phase = 0.4f * float(nv->getFrameStamp()->getFrameNumber() % 1000);
+        if (_phase)
+        {
+            _phase->set(phase);
+            lastMs = osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick());
+            return;
+        }
         osg::Vec3Array& v = *static_cast<osg::Vec3Array*>(g->getVertexArray());
         for (std::size_t i = 0; i < v.size(); ++i)
         {
@@ -103,6 +156,7 @@ public:
 private:
     osg::ref_ptr<osg::Vec3Array> _rest;
     float _amplitude = 0.0f, _waveNumber = 0.0f;
+    osg::ref_ptr<osg::Uniform> _phase; ///< --shader: the wave's phase in the vertex stage
 };
 
 /** The CPU time of the last cull traversal of the node it is the cull callback of. */
@@ -160,7 +214,7 @@ struct Caster
 /** "bunny": the built-in scene bunny (glmark2-data's bunny.obj, 69,666 triangles). "torus1m": a
  *  torus of 1000 x 500 quads (1,000,000 triangles) tilted 50 degrees, put on a ground as the
  *  corpus runs place models, under the built-in scenes' sun. */
-bool makeCaster(const std::string& name, Caster& c, std::string& error)
+bool makeCaster(const std::string& name, bool shader, Caster& c, std::string& error)
 {
     osshar::Scene s;
     if (name == "bunny")
@@ -180,13 +234,14 @@ bool makeCaster(const std::string& name, Caster& c, std::string& error)
     LargestGeometry largest;
     s.root->accept(largest);
     if (!largest.found) return error = "no geometry in '" + name + "'", false;
-    c.name = name;
+    c.name = shader ? name + "+shader" : name;
     c.scene.content = s.root;
     c.scene.view = s.view;
     c.scene.lights = osshar::findLights(s.root.get());
     c.geometry = largest.found;
     c.faces = triangleCount(*c.geometry);
     c.wave = new Wave(*c.geometry);
+    if (shader) c.wave->moveInShader(*c.geometry);
     c.geometry->setUpdateCallback(c.wave.get());
     return true;
 }
@@ -304,7 +359,8 @@ void usage(const char* program)
 {
     std::cout << "usage: " << program
               << " [--casters bunny,torus1m] [--techniques shadowmap,silhouette,volume,hybrid]\n"
-                 "       [--size W H] [--map-size N] [--frames N] [--warmup N] [--rounds N] [--out-dir DIR]\n";
+                 "       [--size W H] [--map-size N] [--frames N] [--warmup N] [--rounds N] [--out-dir DIR] "
+                 "[--shader]\n";
 }
 
 bool parseOptions(osg::ArgumentParser& a, Options& o, std::string& error)
@@ -318,6 +374,7 @@ bool parseOptions(osg::ArgumentParser& a, Options& o, std::string& error)
     a.read("--warmup", o.warmup);
     a.read("--rounds", o.rounds);
     a.read("--out-dir", o.outDir);
+    if (a.read("--shader")) o.shader = true;
     if (o.width < 1 || o.height < 1 || o.frames < 1 || o.warmup < 1 || o.rounds < 1 || o.casters.empty() ||
         o.techniques.empty())
         return error = "bad --size, --frames, --warmup (at least 1), --rounds, --casters or --techniques", false;
@@ -345,7 +402,7 @@ int main(int argc, char** argv)
     }
     std::vector<Caster> casters(o.casters.size());
     for (std::size_t i = 0; i < casters.size(); ++i)
-        if (!makeCaster(o.casters[i], casters[i], error))
+        if (!makeCaster(o.casters[i], o.shader, casters[i], error))
         {
             std::cerr << "osgsilhouette-deforming-bench: " << error << "\n";
             return 1;
