@@ -71,7 +71,7 @@ std::vector<LightInScene> findLights(osg::Node* root);
  *  triangles of OUTDOOR_CELL cells in one osg::Geometry named "terrain"), OUTDOOR_TREES
  *  trees (osg::MatrixTransforms named "tree" sharing two models, a broadleaf and a conifer,
  *  212-256 triangles) and OUTDOOR_BUILDINGS buildings ("building", four shared models of
- *  walls, window sills, a gable roof and a chimney, 164-596 triangles), placed by a
+ *  walls, window sills and lintels, a gable roof and a chimney, 128-1184 triangles), placed by a
  *  fixed-seed generator with their bases at the terrain's height; three trees and a house
  *  stand within 20 m of the view. A sun OUTDOOR_SUN_ELEVATION_DEG above the horizon from
  *  the east; the view is outdoorWalkView(0). */

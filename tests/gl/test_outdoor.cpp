@@ -71,6 +71,12 @@ TEST(OutdoorScene, HoldsATerrainTreesAndBuildings)
     for (const auto* list : {&census.trees, &census.buildings})
         for (const osg::MatrixTransform* t : *list) models.insert(t->getChild(0));
     EXPECT_EQ(models.size(), 6u);
+    // Plain triangles for every tool: the terrain's 2 x 240 x 240, the trees' 212-256 each and
+    // the buildings' 128-1184 each.
+    const size_t triangles = ossref::collectTriangles(*s.root).size();
+    std::cout << "outdoor triangles=" << triangles << std::endl;
+    EXPECT_GT(triangles, 115200u + 1500u * 212u + 60u * 128u);
+    EXPECT_LT(triangles, 115200u + 1500u * 256u + 60u * 1184u);
     // The view: 1.7 m above the terrain.
     EXPECT_NEAR(s.view.eye.z() - osshar::outdoorHeight(s.view.eye.x(), s.view.eye.y()), 1.7, 1e-6);
 }
