@@ -80,7 +80,7 @@ Scene outdoorScene();
 constexpr double OUTDOOR_SIDE = 1200.0, OUTDOOR_CELL = 5.0, OUTDOOR_SUN_ELEVATION_DEG = 12.0;
 constexpr int OUTDOOR_TREES = 1500, OUTDOOR_BUILDINGS = 60;
 
-/** The outdoor terrain's height at (x, y): a sum of sines, slopes below 9 degrees. */
+/** The outdoor terrain's height at (x, y): a sum of sines within +-7.8 m, slopes below 10 degrees. */
 double outdoorHeight(double x, double y);
 
 /** The view of a walk through the outdoor scene at time t (s): an eye 1.7 m above the
