@@ -25,20 +25,23 @@ struct Builder
     void tri(unsigned int a, unsigned int b, unsigned int c) { idx->push_back(a), idx->push_back(b), idx->push_back(c); }
     void quad(unsigned int a, unsigned int b, unsigned int c, unsigned int d) { tri(a, b, c), tri(a, c, d); }
 
-    osg::ref_ptr<osg::Geometry> geometry(const char* name)
-    {
-        osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-        g->setName(name);
-        g->setVertexArray(v.get());
-        g->setNormalArray(n.get(), osg::Array::BIND_PER_VERTEX);
-        g->addPrimitiveSet(idx.get());
-        g->setUseDisplayList(false);
-        g->setUseVertexBufferObjects(true);
-        return g;
-    }
+    osg::ref_ptr<osg::Geometry> geometry(const char* name) { return triangleMesh(name, v.get(), n.get(), idx.get()); }
 };
 
 } // namespace
+
+osg::ref_ptr<osg::Geometry> triangleMesh(const char* name, osg::Vec3Array* vertices, osg::Vec3Array* normals,
+                                         osg::DrawElementsUInt* triangles)
+{
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setName(name);
+    g->setVertexArray(vertices);
+    g->setNormalArray(normals, osg::Array::BIND_PER_VERTEX);
+    g->addPrimitiveSet(triangles);
+    g->setUseDisplayList(false);
+    g->setUseVertexBufferObjects(true);
+    return g;
+}
 
 osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& c, const osg::Vec3& size)
 {

@@ -8,6 +8,11 @@
 
 namespace osshar {
 
+/** An indexed triangle mesh of these arrays (per-vertex normals), drawn from vertex buffer
+ *  objects, as every shape here is made. */
+osg::ref_ptr<osg::Geometry> triangleMesh(const char* name, osg::Vec3Array* vertices, osg::Vec3Array* normals,
+                                         osg::DrawElementsUInt* triangles);
+
 /** An axis-aligned box, centre c, full extents size; 24 vertices (flat faces), 12 triangles. */
 osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& c, const osg::Vec3& size);
 

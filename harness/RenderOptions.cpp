@@ -265,6 +265,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     if (a.read("--moving-light")) o.movingLight = true;
     if (a.read("--animate")) o.animate = true;
     if (a.read("--score-every-frame")) o.scoreEveryFrame = true;
+    a.read("--camera-path", o.cameraPath);
     if (a.read("--time-step", o.timeStep) && !(o.timeStep > 0.0 && std::isfinite(o.timeStep)))
     {
         error = "--time-step takes a finite number of seconds above 0";
@@ -302,7 +303,8 @@ std::string renderOptionsUsage(const std::string& program)
         s << " [" << option << " "
           << osgShadowSilhouette::propertyValueSyntax(*osgShadowSilhouette::findProperty(property)) << "]";
     s << "\n"
-      << "    [--moving-light] [--animate] [--time-step S] [--score-every-frame] [--ground] [--check-gl-errors]\n";
+      << "    [--moving-light] [--animate] [--time-step S] [--camera-path FILE] [--score-every-frame] [--ground]\n"
+      << "    [--check-gl-errors]\n";
     return s.str();
 }
 

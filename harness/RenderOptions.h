@@ -88,10 +88,16 @@ struct RenderOptions
      *  looping (playAnimations()), and renders frame k (warm-up frames first, from 0) at
      *  simulation time k * timeStep; the frames after them (masks, images) show the last. */
     bool animate = false;
-    double timeStep = 1.0 / 30.0; ///< --time-step S: seconds of simulation time per frame under --animate
+    double timeStep = 1.0 / 30.0; ///< --time-step S: seconds of simulation time per frame (--animate, --camera-path)
     /** --score-every-frame: after each timed frame, each light's mask of that frame (rendered
      *  again at its simulation time) scored against its own exact reference. */
     bool scoreEveryFrame = false;
+    /** --camera-path FILE: an osg::AnimationPath in its text format (as osgviewer records
+     *  with 'z') that moves the camera: timed frame k shows the path at its first time plus
+     *  k * timeStep (warm-up frames its first point, frames past its end its last); the
+     *  masks and images after the timed frames show the last timed frame's view. The view
+     *  keeps the scene's (or --fovy's) field of view. */
+    std::string cameraPath;
     std::string classes;              ///< --classes classes.png: DebugView DEBUG_CLASSES per light, with silhouette_pixel_pct
     std::string stats;                ///< --stats: print the technique's statistics
 };

@@ -445,8 +445,8 @@ public:
 
 std::vector<std::string> sceneNames()
 {
-    return {"default", "spheres", "poles",    "cubes", "tree",    "bunny",
-            "dueling", "grazing", "elephant", "ring",  "foliage", "animated"};
+    return {"default", "spheres",  "poles", "cubes",   "tree",     "bunny",  "dueling",
+            "grazing", "elephant", "ring",  "foliage", "animated", "outdoor"};
 }
 
 Scene createScene(const std::string& name)
@@ -463,6 +463,7 @@ Scene createScene(const std::string& name)
     if (name == "ring") return ringScene();
     if (name == "foliage") return foliageScene();
     if (name == "animated") return animatedScene();
+    if (name == "outdoor") return outdoorScene();
     return Scene{name, nullptr, {}};
 }
 

@@ -2,6 +2,7 @@
 #ifndef OSS_HARNESS_SCENES_H
 #define OSS_HARNESS_SCENES_H
 
+#include <osg/AnimationPath>
 #include <osg/Geode>
 #include <osg/Geometry>
 #include <osg/Group>
@@ -36,7 +37,8 @@ struct Scene
  *  casters: a fence panel with diamond holes and crossed cards of leaves, cut out by their
  *  textures' alpha and an osg::AlphaFunc), "animated" (casters deformed every frame: a
  *  skinned osgAnimation::RigGeometry, an osgAnimation::MorphGeometry and a geometry whose
- *  vertex array an update callback edits; AnimatedScenes.h). */
+ *  vertex array an update callback edits; AnimatedScenes.h), "outdoor" (a 1.2 km terrain
+ *  with trees and buildings under a low sun, seen from eye height: outdoorScene()). */
 std::vector<std::string> sceneNames();
 
 /** A built-in scene by name; root is null for an unknown name, and for "bunny" when its
@@ -63,6 +65,32 @@ struct LightInScene
 
 /** Every LightSource below root that carries an osg::Light, in traversal order. */
 std::vector<LightInScene> findLights(osg::Node* root);
+
+/** The "outdoor" scene (OutdoorScene.cpp, docs/outdoor.md): a height-field terrain of
+ *  OUTDOOR_SIDE x OUTDOOR_SIDE metres centred on the origin (z up, heights outdoorHeight(),
+ *  triangles of OUTDOOR_CELL cells in one osg::Geometry named "terrain"), OUTDOOR_TREES
+ *  trees (osg::MatrixTransforms named "tree" sharing two models, a broadleaf and a conifer,
+ *  212-256 triangles) and OUTDOOR_BUILDINGS buildings ("building", four shared models of
+ *  walls, window sills and lintels, a gable roof and a chimney, 128-1184 triangles), placed by a
+ *  fixed-seed generator with their bases at the terrain's height; three trees and a house
+ *  stand within 20 m of the view. A sun OUTDOOR_SUN_ELEVATION_DEG above the horizon from
+ *  the east; the view is outdoorWalkView(0). */
+Scene outdoorScene();
+
+constexpr double OUTDOOR_SIDE = 1200.0, OUTDOOR_CELL = 5.0, OUTDOOR_SUN_ELEVATION_DEG = 12.0;
+constexpr int OUTDOOR_TREES = 1500, OUTDOOR_BUILDINGS = 60;
+
+/** The outdoor terrain's height at (x, y): a sum of sines within +-7.8 m, slopes below 10 degrees. */
+double outdoorHeight(double x, double y);
+
+/** The view of a walk through the outdoor scene at time t (s): an eye 1.7 m above the
+ *  terrain walking at 1.5 m/s and turning by 2 degrees/s, looking 2.5 degrees down, fovy 50. */
+View outdoorWalkView(double t);
+
+/** That walk as an osg::AnimationPath (osgGA::AnimationPathManipulator's camera matrices,
+ *  the format osgviewer records): `frames` control points `timeStep` apart from time 0
+ *  (data/outdoor-walk.path is outdoorWalk(150, 1 / 30.0)). */
+osg::ref_ptr<osg::AnimationPath> outdoorWalk(int frames, double timeStep);
 
 /** A loaded model put on a ground, as the corpus runs see it: turned -30 degrees about z,
  *  scaled so that its bounding box's largest side is 6 units, its box centred on the z axis

@@ -5,6 +5,11 @@
 //   OSG_LIBRARY_PATH=build/lib build/bin/osgsilhouette-export data            (every scene)
 //   OSG_LIBRARY_PATH=build/lib build/bin/osgsilhouette-export data poles cubes
 //
+// --walk FILE writes the walk through the "outdoor" scene as a camera path instead
+// (osg::AnimationPath's text format, as osgviewer records it): data/outdoor-walk.path is
+//
+//   build/bin/osgsilhouette-export --walk data/outdoor-walk.path
+//
 // The file format follows the extension given with --ext (default osgt). Text files are
 // written with one space of indentation per level instead of OSG's two and no trailing
 // spaces (a third smaller; OSG reads them the same): the 1000 boxes of "cubes" stay under 3 MB.
@@ -95,14 +100,27 @@ bool exportScene(const std::string& name, const std::string& dir, const std::str
     return true;
 }
 
+/** The outdoor walk (osshar::outdoorWalk) of 150 frames at 30 per second, written to `file`. */
+int writeWalk(const std::string& file)
+{
+    std::ofstream out(file);
+    out.precision(9);
+    osshar::outdoorWalk(150, 1.0 / 30.0)->write(out);
+    if (out) return 0;
+    std::cerr << "osgsilhouette-export: cannot write " << file << std::endl;
+    return 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     osg::ArgumentParser args(&argc, argv);
-    args.getApplicationUsage()->setCommandLineUsage(args.getApplicationName() + " [--ext osgt] <directory> [scene...]");
-    std::string ext = "osgt";
+    args.getApplicationUsage()->setCommandLineUsage(args.getApplicationName() +
+                                                    " [--ext osgt] <directory> [scene...] | --walk FILE");
+    std::string ext = "osgt", walk;
     args.read("--ext", ext);
+    if (args.read("--walk", walk)) return writeWalk(walk);
     if (argc < 2 || args.read("--help") || args.read("-h"))
     {
         args.getApplicationUsage()->write(std::cout);

@@ -12,8 +12,13 @@
  * earlier --reference-visibility run instead of casting it again.
  *
  * --animate plays the scene's osgAnimation animations at a fixed step of simulation time per
- * frame (--time-step, default 1/30 s); --score-every-frame scores each timed frame's mask
- * against that frame's own reference and prints frame_wrong_pct_max=... per light.
+ * frame (--time-step, default 1/30 s); --camera-path FILE moves the camera along an
+ * osg::AnimationPath (osgviewer's recorded paths), one --time-step per timed frame;
+ * --score-every-frame scores each timed frame's mask against that frame's own reference and
+ * prints frame_wrong_pct_max=... and flicker_pct=... (pixels whose mask changes from the
+ * previous frame while the reference's does not) per light. Scores against a computed
+ * reference also come per band of eye distance: wrong_pct_near= (0-20), wrong_pct_mid=
+ * (20-200), wrong_pct_far= (beyond; scene units, docs/outdoor.md).
  *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
  * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
@@ -37,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 namespace {
@@ -171,25 +177,92 @@ int writeVisibility(const osshar::RenderOptions& options, const osshar::Prepared
     return status;
 }
 
-/** --score-every-frame: per light, the wrong_pct of each timed frame's mask. */
+/** The peer's reference: `reference` with the pixels where the peer's vertex normals and the
+ *  faces disagree on facing left out (MEASURE.md); their number in `excluded`. */
+ossref::Mask peerReference(const ossref::Mask& reference, const osshar::PreparedScene& scene,
+                           const ossref::Camera& camera, const osshar::PeerMask& peerMask, unsigned int index,
+                           long long& excluded)
+{
+    const ossref::Light light = osshar::referenceLight(scene.lights[index]);
+    return osshar::excludeFacingDisagreement(reference, osshar::referenceFacing(*scene.content, camera, light),
+                                             peerMask.vertexFacing, excluded);
+}
+
+/** The eye-distance bands of the scores (docs/outdoor.md): 0-20, 20-200 and beyond. */
+const std::vector<double>& distanceBands()
+{
+    static const std::vector<double> edges{20.0, 200.0};
+    return edges;
+}
+
+/** " wrong_pct_near=... near_pixels=... wrong_pct_mid=... ..." of a mask against a reference
+ *  with distances; empty without them. */
+std::string bandScores(const ossref::Mask& mask, const ossref::Mask& reference)
+{
+    const std::vector<ossref::BandScore> bands = ossref::compareMasksByDistance(mask, reference, distanceBands());
+    std::string out;
+    const char* names[] = {"near", "mid", "far"};
+    for (std::size_t b = 0; b < bands.size() && b < 3; ++b)
+    {
+        char buf[160];
+        std::snprintf(buf, sizeof(buf), " wrong_pct_%s=%.4f %s_pixels=%lld %s_wrong_pixels=%lld", names[b],
+                      bands[b].wrongPct, names[b], bands[b].geometryPixels, names[b], bands[b].wrongPixels);
+        out += buf;
+    }
+    return out;
+}
+
+/** --score-every-frame: per light, the wrong_pct of each timed frame's mask and the flicker
+ *  between consecutive timed frames. */
 struct FrameScores
 {
-    std::vector<std::vector<double>> wrongPct; ///< [light][timed frame]
-    int failures = 0;                          ///< masks that could not be compared
+    std::vector<std::vector<double>> wrongPct;         ///< [light][timed frame]
+    std::vector<std::vector<double>> flickerPct;       ///< [light][timed frame after the first]
+    std::vector<ossref::Mask> lastMask, lastReference; ///< [light]: the previous frame's
+    int failures = 0;                                  ///< masks that could not be compared
 };
 
-/** Scores the frame just rendered: each light's mask, rendered again at the same simulation
- *  time, against the exact reference of the scene as that frame left it. */
-void scoreFrame(const osshar::PreparedScene& scene, const ossref::Camera& camera, osshar::Renderer& renderer,
-                SilhouetteShadowTechnique& technique, int frame, FrameScores& scores)
+/** What the per-frame scores render: the technique's masks, or a peer's (first light). */
+struct FrameSubject
 {
-    scores.wrongPct.resize(scene.lights.size());
-    for (unsigned int i = 0; i < scene.lights.size(); ++i)
+    SilhouetteShadowTechnique* technique = nullptr;
+    osg::Node* peerRoot = nullptr;
+    osg::ref_ptr<osg::Node> unshadowed; ///< a peer's unshadowed frame
+
+    unsigned int lights(const osshar::PreparedScene& scene) const
     {
-        const ossref::Mask mask = renderMask(renderer, technique, i);
-        const ossref::Mask reference =
-            ossref::computeReferenceMask(*scene.content, camera, osshar::referenceLight(scene.lights[i]),
-                                         scene.castsMask, scene.referenceTraversalMask());
+        return technique ? unsigned(scene.lights.size()) : std::min<unsigned>(1, unsigned(scene.lights.size()));
+    }
+};
+
+/** Light `i`'s mask of the frame just rendered and its exact reference. */
+void frameMasks(const osshar::PreparedScene& scene, const ossref::Camera& camera, osshar::Renderer& renderer,
+                const FrameSubject& subject, unsigned int i, ossref::Mask& mask, ossref::Mask& reference)
+{
+    osshar::PeerMask peerMask;
+    if (subject.technique)
+        mask = renderMask(renderer, *subject.technique, i);
+    else
+        mask = (peerMask = osshar::renderPeerMask(renderer, subject.peerRoot, subject.unshadowed.get())).mask;
+    reference = ossref::computeReferenceMask(*scene.content, camera, osshar::referenceLight(scene.lights[i]),
+                                             scene.castsMask, scene.referenceTraversalMask());
+    long long excluded = 0;
+    if (!subject.technique) reference = peerReference(reference, scene, camera, peerMask, i, excluded);
+}
+
+/** Scores the frame just rendered: each light's mask, rendered again at the same simulation
+ *  time, against the exact reference of the scene as that frame left it, and its flicker
+ *  against the previous timed frame. */
+void scoreFrame(const osshar::PreparedScene& scene, const ossref::Camera& camera, osshar::Renderer& renderer,
+                const FrameSubject& subject, int frame, FrameScores& scores)
+{
+    const unsigned int lights = subject.lights(scene);
+    scores.wrongPct.resize(lights), scores.flickerPct.resize(lights);
+    scores.lastMask.resize(lights), scores.lastReference.resize(lights);
+    for (unsigned int i = 0; i < lights; ++i)
+    {
+        ossref::Mask mask, reference;
+        frameMasks(scene, camera, renderer, subject, i, mask, reference);
         const ossref::Comparison c = ossref::compareMasks(mask, reference);
         if (!c.valid)
         {
@@ -197,10 +270,24 @@ void scoreFrame(const osshar::PreparedScene& scene, const ossref::Camera& camera
             ++scores.failures;
             continue;
         }
-        std::printf("frame=%d time=%.4f light=%u geometry_pixels=%lld wrong_pixels=%lld wrong_pct=%.4f\n", frame,
-                    renderer.simulationTime(), i, c.geometryPixels, c.wrongPixels, c.wrongPct);
+        const ossref::FlickerCount f =
+            ossref::countFlicker(scores.lastMask[i], mask, scores.lastReference[i], reference);
+        std::printf("frame=%d time=%.4f light=%u geometry_pixels=%lld wrong_pixels=%lld wrong_pct=%.4f%s", frame,
+                    renderer.simulationTime(), i, c.geometryPixels, c.wrongPixels, c.wrongPct,
+                    bandScores(mask, reference).c_str());
+        if (f.valid) std::printf(" flicker_pixels=%lld flicker_pct=%.4f", f.flickerPixels, f.flickerPct);
+        std::printf("\n");
         scores.wrongPct[i].push_back(c.wrongPct);
+        if (f.valid) scores.flickerPct[i].push_back(f.flickerPct);
+        scores.lastMask[i] = std::move(mask), scores.lastReference[i] = std::move(reference);
     }
+}
+
+double mean(const std::vector<double>& v)
+{
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return v.empty() ? 0.0 : sum / double(v.size());
 }
 
 void printFrameScores(const FrameScores& scores)
@@ -209,11 +296,43 @@ void printFrameScores(const FrameScores& scores)
     {
         const std::vector<double>& w = scores.wrongPct[i];
         if (w.empty()) continue;
-        double sum = 0.0;
-        for (double x : w) sum += x;
         std::printf("light=%zu frames_scored=%zu frame_wrong_pct_max=%.4f frame_wrong_pct_mean=%.4f\n", i, w.size(),
-                    *std::max_element(w.begin(), w.end()), sum / double(w.size()));
+                    *std::max_element(w.begin(), w.end()), mean(w));
+        const std::vector<double>& f = scores.flickerPct[i];
+        if (!f.empty())
+            std::printf("light=%zu flicker_frames=%zu flicker_pct=%.4f flicker_pct_max=%.4f\n", i, f.size(), mean(f),
+                        *std::max_element(f.begin(), f.end()));
     }
+}
+
+/** --camera-path FILE read as an osg::AnimationPath (its text format); null with a message
+ *  when it cannot be read or holds no control point. */
+osg::ref_ptr<osg::AnimationPath> readCameraPath(const std::string& file, std::string& error)
+{
+    std::ifstream in(file);
+    if (!in)
+    {
+        error = "--camera-path: cannot read " + file;
+        return nullptr;
+    }
+    osg::ref_ptr<osg::AnimationPath> path = new osg::AnimationPath;
+    path->read(in);
+    if (path->empty()) error = "--camera-path: " + file + " holds no control point (time x y z qx qy qz qw lines)";
+    path->setLoopMode(osg::AnimationPath::NO_LOOPING);
+    return path->empty() ? nullptr : path;
+}
+
+/** The view of a camera path `t` seconds after its first time: the control point's camera
+ *  matrix (osgGA::AnimationPathManipulator's) looking along its -z with its +y up. */
+osshar::View viewOnPath(const osg::AnimationPath& path, double t, double fovy)
+{
+    osg::AnimationPath::ControlPoint cp;
+    path.getInterpolatedControlPoint(path.getFirstTime() + t, cp);
+    osg::Matrixd m;
+    cp.getMatrix(m);
+    const osg::Vec3d eye = m.getTrans();
+    return {eye, eye + osg::Matrixd::transform3x3(osg::Vec3d(0, 0, -1), m),
+            osg::Matrixd::transform3x3(osg::Vec3d(0, 1, 0), m), fovy};
 }
 
 } // namespace
@@ -238,8 +357,10 @@ int main(int argc, char** argv)
     osshar::PreparedScene scene;
     osg::ref_ptr<osg::Node> root;
     osg::ref_ptr<SilhouetteShadowTechnique> technique;
+    osg::ref_ptr<osg::AnimationPath> cameraPath;
     if (!osshar::parseRenderOptions(arguments, options, error) || !osshar::prepareScene(options, scene, error) ||
-        !osshar::makeShadowedRoot(options.mode, options.mapSize, scene, root, technique, error))
+        !osshar::makeShadowedRoot(options.mode, options.mapSize, scene, root, technique, error) ||
+        (!options.cameraPath.empty() && !(cameraPath = readCameraPath(options.cameraPath, error))))
     {
         std::cerr << "osgsilhouetteshadow: " << error << "\n" << osshar::renderOptionsUsage(arguments.getApplicationName());
         return 1;
@@ -280,17 +401,26 @@ int main(int argc, char** argv)
             std::cerr << "osgsilhouetteshadow: --animate plays BasicAnimationManagers only; " << others
                       << " other animation managers left as they are\n";
     }
-    const ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+    ossref::Camera refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+    const bool peer = osshar::isPeerMode(options.mode);
     FrameScores frameScores;
+    const FrameSubject subject{technique.get(), root.get(), peer ? osshar::makeUnshadowedRoot(scene) : nullptr};
     const auto beforeFrame = [&](int frame) {
         if (options.animate) renderer.setSimulationTime(frame * options.timeStep);
+        if (cameraPath)
+        {
+            scene.view =
+                viewOnPath(*cameraPath, std::max(0, frame - options.warmup) * options.timeStep, scene.view.fovy);
+            renderer.setView(scene.view);
+            refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
+        }
         if (!moving) return;
         const double angle = osg::DegreesToRadians(frame % 2 ? 0.1 : -0.1);
         moving->setPosition(rest * osg::Matrix::rotate(angle, osg::Vec3(0.0f, 0.0f, 1.0f)));
     };
     const auto afterFrame = [&](int frame) {
-        if (options.scoreEveryFrame && technique && frame >= options.warmup)
-            scoreFrame(scene, refCamera, renderer, *technique, frame, frameScores);
+        if (options.scoreEveryFrame && (technique || peer) && frame >= options.warmup)
+            scoreFrame(scene, refCamera, renderer, subject, frame, frameScores);
     };
     const osshar::FrameTiming timing = renderer.timeFrames(options.warmup, options.frames, beforeFrame, afterFrame);
     int status = frameScores.failures ? 1 : 0;
@@ -347,7 +477,6 @@ int main(int argc, char** argv)
         osg::ref_ptr<osg::Image> color = renderer.renderAndCapture();
         if (!osgDB::writeImageFile(*color, options.out)) std::cerr << "cannot write " << options.out << "\n";
     }
-    const bool peer = osshar::isPeerMode(options.mode);
     const unsigned int maskLights = peer ? std::min<unsigned int>(1, scene.lights.size()) : scene.lights.size();
     for (unsigned int i = 0; i < maskLights; ++i)
     {
@@ -389,9 +518,7 @@ int main(int argc, char** argv)
         if (peer)
         {
             long long excluded = 0;
-            const ossref::Light light = osshar::referenceLight(scene.lights[i]);
-            reference = osshar::excludeFacingDisagreement(
-                reference, osshar::referenceFacing(*scene.content, refCamera, light), peerMask.vertexFacing, excluded);
+            reference = peerReference(reference, scene, refCamera, peerMask, i, excluded);
             std::printf("facing_excluded_pixels=%lld\n", excluded);
         }
         const ossref::Comparison c = ossref::compareMasks(mask, reference);
@@ -403,6 +530,8 @@ int main(int argc, char** argv)
         }
         std::printf("light=%u geometry_pixels=%lld wrong_pixels=%lld wrong_pct=%.4f coverage_mismatch=%lld\n", i,
                     c.geometryPixels, c.wrongPixels, c.wrongPct, c.coverageMismatch);
+        const std::string bands = bandScores(mask, reference);
+        if (!bands.empty()) std::printf("light=%u%s\n", i, bands.c_str());
         if (!options.diff.empty()) osgDB::writeImageFile(*ossref::diffImage(mask, reference), perLightName(options.diff, i));
     }
     // Every frame rendered above, the masks' and images' included.

@@ -73,6 +73,19 @@ TEST(RenderOptions, SoftShadowOptionsParse)
     EXPECT_EQ(parse({}).options.lightSize, 0.0); // a hard shadow unless asked
 }
 
+// A walk through a scene: a camera path played one frame per --time-step, scored per frame.
+TEST(RenderOptions, CameraPathParses)
+{
+    const Parsed p =
+        parse({"--scene", "outdoor", "--camera-path", "walk.path", "--time-step", "0.25", "--score-every-frame"});
+    ASSERT_TRUE(p.ok) << p.error;
+    EXPECT_EQ(p.options.cameraPath, "walk.path");
+    EXPECT_EQ(p.options.timeStep, 0.25);
+    EXPECT_TRUE(p.options.scoreEveryFrame);
+    EXPECT_TRUE(parse({}).options.cameraPath.empty());
+    EXPECT_NE(osshar::renderOptionsUsage("osgsilhouetteshadow").find("--camera-path FILE"), std::string::npos);
+}
+
 // Every property of the technique can be set by --property NAME=VALUE, read by its table row,
 // in order with the shorthands: the last one given wins.
 TEST(RenderOptions, PropertiesComeFromTheTable)
@@ -109,6 +122,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadLine{"UnknownOption", {"--bogus-flag"}, "--bogus-flag"},
                       BadLine{"MapSizeNotANumber", {"--map-size", "abc"}, "--map-size"},
                       BadLine{"TrailingOptionWithoutValue", {"--mode", "volume", "--out"}, "--out"},
+                      BadLine{"CameraPathWithoutFile", {"--camera-path"}, "--camera-path"},
                       BadLine{"ZeroFrames", {"--frames", "0"}, "--frames"},
                       BadLine{"TwoFiles", {"a.osgt", "b.osgt"}, "b.osgt"},
                       BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size -5 is out of range (1 to 16384"},

@@ -211,6 +211,67 @@ Comparison compareMasks(const Mask& test, const Mask& reference)
     return r;
 }
 
+namespace {
+
+/** Whether pixel i counts in a score (Comparison::geometryPixels): test and reference values
+ *  `t` and `ref` (classified) both have geometry, the reference outside its grazing band. */
+bool judged(uint8_t t, uint8_t ref, const Mask& reference, size_t i)
+{
+    return t != MASK_BACKGROUND && ref != MASK_BACKGROUND && !reference.isGrazing(i);
+}
+
+bool sameSize(const Mask& a, const Mask& b)
+{
+    return consistent(a) && consistent(b) && a.width == b.width && a.height == b.height;
+}
+
+double percent(long long part, long long whole)
+{
+    return whole > 0 ? 100.0 * part / whole : 0.0;
+}
+
+} // namespace
+
+std::vector<BandScore> compareMasksByDistance(const Mask& test, const Mask& reference, const std::vector<double>& edges)
+{
+    if (!sameSize(test, reference) || reference.distance.size() != reference.value.size()) return {};
+    std::vector<BandScore> bands(edges.size() + 1);
+    for (size_t b = 0; b < bands.size(); ++b)
+    {
+        bands[b].from = b == 0 ? 0.0 : edges[b - 1];
+        bands[b].to = b < edges.size() ? edges[b] : std::numeric_limits<double>::infinity();
+    }
+    for (size_t i = 0; i < test.value.size(); ++i)
+    {
+        const uint8_t t = classify(test.value[i]), ref = classify(reference.value[i]);
+        if (!judged(t, ref, reference, i)) continue;
+        const double d = reference.distance[i];
+        const size_t b = size_t(std::upper_bound(edges.begin(), edges.end(), d) - edges.begin());
+        ++bands[b].geometryPixels;
+        if (t != ref) ++bands[b].wrongPixels;
+    }
+    for (BandScore& band : bands) band.wrongPct = percent(band.wrongPixels, band.geometryPixels);
+    return bands;
+}
+
+FlickerCount countFlicker(const Mask& previousTest, const Mask& test, const Mask& previousReference,
+                          const Mask& reference)
+{
+    FlickerCount r;
+    if (!sameSize(test, reference) || !sameSize(test, previousTest) || !sameSize(test, previousReference)) return r;
+    r.valid = true;
+    for (size_t i = 0; i < test.value.size(); ++i)
+    {
+        const uint8_t t = classify(test.value[i]), ref = classify(reference.value[i]);
+        if (!judged(t, ref, reference, i)) continue;
+        ++r.geometryPixels;
+        const uint8_t t0 = classify(previousTest.value[i]), ref0 = classify(previousReference.value[i]);
+        if (t0 != MASK_BACKGROUND && ref0 == ref && t0 != t) ++r.flickerPixels;
+    }
+    r.flickerPct = percent(r.flickerPixels, r.geometryPixels);
+    return r;
+}
+
 Mask maskFromImage(const osg::Image& image)
 {
     const GLenum type = image.getDataType();

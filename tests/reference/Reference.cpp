@@ -28,6 +28,7 @@
 #include <stdexcept>
 #include <thread>
 #include <tuple>
+#include <type_traits>
 
 namespace ossref {
 
@@ -498,6 +499,7 @@ struct PixelResult
 {
     uint8_t value = MASK_BACKGROUND;
     uint8_t grazing = 0;
+    float distance = std::numeric_limits<float>::infinity(); ///< eye to the visible point
 };
 
 struct PixelVisibility
@@ -1043,6 +1045,7 @@ PixelResult Tracer::Impl::shade(const RayFrame& rays, const LightFrame& light, d
     SurfacePoint surface;
     if (!visiblePoint(rays, winX, winY, surface)) return result;
     result.value = MASK_NO_LIGHT;
+    result.distance = float((surface.p - (rays.origin - centre)).length());
     if (!facesLight(light, surface, result.grazing)) return result;
 
     const double eps = epsilon(surface.p);
@@ -1148,6 +1151,7 @@ void Tracer::Impl::renderRows(const RayFrame& rays, const LightFrame& light, Mas
             const PixelResult r = shade(rays, light, x + 0.5, y + 0.5);
             mask.value[row + x] = r.value;
             mask.grazing[row + x] = r.grazing;
+            mask.distance[row + x] = r.distance;
         }
     }
 }
@@ -1179,6 +1183,8 @@ MaskT Tracer::Impl::renderMask(const Camera& camera, const Light& light, unsigne
 {
     if (camera.width <= 0 || camera.height <= 0) return MaskT();
     MaskT mask = MaskT::filled(camera.width, camera.height);
+    if constexpr (std::is_same_v<MaskT, Mask>)
+        mask.distance.assign(mask.value.size(), std::numeric_limits<float>::infinity());
     const RayFrame rays(camera);
     const LightFrame lightFrame(light, centre);
     splitRows(camera.height, threads,

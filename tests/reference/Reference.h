@@ -110,8 +110,11 @@ struct Mask
     int height = 0;
     std::vector<uint8_t> value;
     std::vector<uint8_t> grazing;
+    /** Per pixel the distance from the eye to the point the primary ray sees, in scene
+     *  units (+inf on background), as the reference fills it; empty for masks from images. */
+    std::vector<float> distance;
 
-    /** A width x height mask filled with `fill`, grazing all 0. */
+    /** A width x height mask filled with `fill`, grazing all 0, no distances. */
     static Mask filled(int width, int height, uint8_t fill = MASK_BACKGROUND)
     {
         return filledMask<Mask>(width, height, fill);
@@ -385,6 +388,39 @@ struct Comparison
 /** Compare `test` with `reference`. Values are classified as in maskFromImage (<64 -> 0,
  *  >192 -> 255, else background); the grazing band is the reference's. */
 Comparison compareMasks(const Mask& test, const Mask& reference);
+
+/** The score of the pixels whose reference point lies in [from, to) from the eye. */
+struct BandScore
+{
+    double from = 0.0, to = 0.0;  ///< eye distances, scene units (to may be +inf)
+    long long geometryPixels = 0; ///< as Comparison::geometryPixels, within the band
+    long long wrongPixels = 0;    ///< as Comparison::wrongPixels, within the band
+    double wrongPct = 0.0;        ///< 100 * wrongPixels / geometryPixels (0 if none)
+};
+
+/** compareMasks() split by the eye distance of the reference's visible point
+ *  (Mask::distance): `edges` {20, 200} give the bands [0, 20), [20, 200) and [200, inf).
+ *  The bands' pixels add up to compareMasks()'s. Empty when the masks differ in size or the
+ *  reference has no distances. */
+std::vector<BandScore> compareMasksByDistance(const Mask& test, const Mask& reference,
+                                              const std::vector<double>& edges);
+
+/** Pixels whose mask changes from one frame to the next while the reference's does not. */
+struct FlickerCount
+{
+    bool valid = false;           ///< false when the four masks differ in size or one is empty
+    long long geometryPixels = 0; ///< this frame's geometry pixels (as Comparison::geometryPixels)
+    /** Among them: pixels with geometry in both frames' masks whose test value changed
+     *  (0 to 255 or back) while the reference's value stayed the same. */
+    long long flickerPixels = 0;
+    double flickerPct = 0.0; ///< 100 * flickerPixels / geometryPixels (0 if none)
+};
+
+/** The flicker of `test` against its previous frame `previousTest`, where the exact
+ *  reference went from `previousReference` to `reference` (values classified by classify();
+ *  the grazing band is this frame's reference's). */
+FlickerCount countFlicker(const Mask& previousTest, const Mask& test, const Mask& previousReference,
+                          const Mask& reference);
 
 /** Per pixel Euclidean distance (in pixels) to the nearest shadow-boundary pixel of
  *  `mask` (see Comparison::meanWrongDistance); row 0 = top. All +inf when there is no
