@@ -252,7 +252,8 @@ public:
         for (std::uint32_t i = _first; i < _first + _count; ++i) (*_indices)[i] += offset;
         _indices->dirty();
     }
-    // The element buffer is the shared array's: these reach it.
+    // The element buffer is the shared array's: these reach it (a Geometry calls them of its
+    // DrawElements only, so ShadowVolumeGroup releases the arrays itself too).
     void resizeGLObjectBuffers(unsigned int maxSize) override { _indices->resizeGLObjectBuffers(maxSize); }
     void releaseGLObjects(osg::State* state) const override { _indices->releaseGLObjects(state); }
 
@@ -286,6 +287,9 @@ ShadowVolumeGroup::~ShadowVolumeGroup() = default;
 void ShadowVolumeGroup::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _root->resizeGLObjectBuffers(maxSize); // every entry's transform, volumes and state
+    // The index arrays the volumes' ranges draw from: a Geometry reaches only DrawElements.
+    for (const Entry& e : _entries)
+        if (e.indices) e.indices->resizeGLObjectBuffers(maxSize);
     for (osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(), _capCullStates[0][0].get(),
                               _capCullStates[0][1].get(), _capCullStates[1][0].get(), _capCullStates[1][1].get(),
                               _frontFaceStates[0].get(), _frontFaceStates[1].get()})
@@ -295,6 +299,8 @@ void ShadowVolumeGroup::resizeGLObjectBuffers(unsigned int maxSize)
 void ShadowVolumeGroup::releaseGLObjects(osg::State* state) const
 {
     _root->releaseGLObjects(state);
+    for (const Entry& e : _entries)
+        if (e.indices) e.indices->releaseGLObjects(state); // as in resizeGLObjectBuffers()
     for (const osg::StateSet* ss : {_zfailState.get(), _zpassState.get(), _lightCapState.get(),
                                     _capCullStates[0][0].get(), _capCullStates[0][1].get(), _capCullStates[1][0].get(),
                                     _capCullStates[1][1].get(), _frontFaceStates[0].get(), _frontFaceStates[1].get()})
