@@ -173,11 +173,17 @@ bool readProperties(osg::ArgumentParser& a, RenderOptions& o, std::string& error
 const std::vector<std::pair<std::string, std::string>>& propertyOptions()
 {
     static const std::vector<std::pair<std::string, std::string>> options = {
-        {"--max-shadow-lights", "MaxShadowLights"},   {"--blocker-culling", "BlockerCulling"},
-        {"--hybrid-method", "HybridMethod"},          {"--hybrid-edges", "HybridEdgeMask"},
-        {"--depth-prepass", "DepthPrepass"},          {"--shadow-ray-offset", "ShadowRayOffset"},
-        {"--per-pixel-lighting", "PerPixelLighting"}, {"--filter", "Filter"},
-        {"--filter-window", "FilterWindow"},          {"--soft-samples", "SoftSamples"}};
+        {"--max-shadow-lights", "MaxShadowLights"},
+        {"--blocker-culling", "BlockerCulling"},
+        {"--hybrid-method", "HybridMethod"},
+        {"--hybrid-edges", "HybridEdgeMask"},
+        {"--depth-prepass", "DepthPrepass"},
+        {"--shadow-ray-offset", "ShadowRayOffset"},
+        {"--per-pixel-lighting", "PerPixelLighting"},
+        {"--filter", "Filter"},
+        {"--filter-window", "FilterWindow"},
+        {"--soft-samples", "SoftSamples"},
+        {"--warp", "PerspectiveWarp"}};
     return options;
 }
 

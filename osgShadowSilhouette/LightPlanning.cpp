@@ -39,11 +39,15 @@ std::vector<int> assignShadowSlots(const std::vector<FoundLight>& lights, const 
 }
 
 /** Fits the light frustum of one light to the casters that can shadow the visible region. */
-LightFrustum fitLightFrustum(const LightDescription& light, const FrameContext& frame, unsigned int mapSize)
+LightFrustum fitLightFrustum(const LightDescription& light, const FrameContext& frame, const SlotBudget& budget)
 {
-    if (light.type == LightDescription::DIRECTIONAL)
-        return fitDirectionalFrustum(light.direction, frame.region, frame.casters, mapSize);
-    return fitPerspectiveFrustum(light, frame.region, frame.casters);
+    if (light.type != LightDescription::DIRECTIONAL) return fitPerspectiveFrustum(light, frame.region, frame.casters);
+    if (!budget.warp || !frame.view.valid)
+        return fitDirectionalFrustum(light.direction, frame.region, frame.casters, budget.mapSize);
+    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(frame.view.view);
+    return fitWarpedDirectionalFrustum(light.direction, frame.region, frame.casters, budget.mapSize,
+                                       osg::Vec3d() * eyeToWorld,
+                                       osg::Matrixd::transform3x3(osg::Vec3d(0.0, 0.0, -1.0), eyeToWorld));
 }
 
 /** The frusta of a light: one, or a point light's cube faces, which take the slots from
@@ -75,7 +79,7 @@ std::vector<LightFrustum> planLightFrusta(const FrameContext& frame, const Light
             frusta.clear();
         }
     }
-    if (frusta.empty()) frusta.push_back(fitLightFrustum(light, frame, budget.mapSize));
+    if (frusta.empty()) frusta.push_back(fitLightFrustum(light, frame, budget));
     if (frusta.size() > 1) nextFreeSlot += static_cast<unsigned int>(frusta.size() - 1);
     return frusta;
 }

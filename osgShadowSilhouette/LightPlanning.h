@@ -26,6 +26,7 @@ struct SlotBudget
     unsigned int slotLimit = 4;       ///< the slots the mode's texture units hold (cube faces included)
     bool cubeFaces = true;            ///< point lights may take cube faces (not SHADOW_VOLUME)
     double faceMarginTexels = 4.0;    ///< how far a cube face's map reaches past its square (the filter's reach)
+    bool warp = false;                ///< directional lights get maps warped toward the eye (PerspectiveWarp)
 };
 
 /** Whether @p light casts a shadow under LightNum @p lightNum (-1: every light does). */

@@ -296,6 +296,176 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     return f;
 }
 
+namespace {
+
+constexpr double WARP_TURN_STEPS = 32.0;      // the warp's axis turns in steps of 1/32 turn
+constexpr double WARP_MIN_SIN_GAMMA = 0.17;   // ~10 degrees between the view and the light
+constexpr double WARP_MIN_NEAR_SHARE = 1e-3;  // z_n is at least this share of z_f
+constexpr double WARP_MAX_NEAR_RATIO = 100.0; // n beyond this many region lengths: uniform
+constexpr double WARP_CENTRE_STEPS = 8.0;     // the centre moves on a grid of n / 8
+
+/** v rounded up to the next of the steps 2^(k/16). */
+double stepUp(double v)
+{
+    return std::exp2(std::ceil(16.0 * std::log2(v)) / 16.0);
+}
+
+/** The range of n texels, of a size in steps of 2^(1/16), on that size's grid, that holds r. */
+Range snapToTexels(Range r, double n)
+{
+    const double texel =
+        stepUp(std::max((r.hi - r.lo) / std::max(1.0, n - 1.0), 1e-12 * (std::fabs(r.lo) + std::fabs(r.hi)) + 1e-300));
+    r.lo = std::floor(r.lo / texel) * texel;
+    r.hi = r.lo + texel * n;
+    return r;
+}
+
+/** The warp's light view (rotation only): looking along -d, its y axis the view direction's
+ *  part across d turned to a multiple of 1/32 turn of a fixed frame. False (no warp) when the
+ *  view looks within ~10 degrees of d or away from it. */
+bool warpRotation(const osg::Vec3d& d, osg::Vec3d view, osg::Matrixd& rotation, double& sinGamma)
+{
+    if (view.normalize() == 0.0) return false;
+    const osg::Vec3d across = view - d * (view * d);
+    sinGamma = across.length();
+    if (!(sinGamma >= WARP_MIN_SIN_GAMMA)) return false;
+    const osg::Vec3d a = orthogonal(d), b = d ^ a;
+    const double step = 2.0 * osg::PI / WARP_TURN_STEPS;
+    const double phi = std::round(std::atan2(across * b, across * a) / step) * step;
+    rotation = osg::Matrixd::lookAt(osg::Vec3d(), -d, a * std::cos(phi) + b * std::sin(phi));
+    return true;
+}
+
+/** Wimmer's n_opt for the region seen from eye along view, in steps of 2^(1/4); 0 if the
+ *  region does not lie ahead of the eye. */
+double warpDistance(const std::vector<osg::Vec3d>& region, const osg::Vec3d& eye, osg::Vec3d view, double sinGamma)
+{
+    view.normalize();
+    Range z;
+    for (const osg::Vec3d& p : region) z.expand((p - eye) * view);
+    if (!(z.hi > 0.0)) return 0.0;
+    const double zn = std::max(z.lo, WARP_MIN_NEAR_SHARE * z.hi);
+    const double n = (zn + std::sqrt(zn * z.hi)) / sinGamma;
+    return std::exp2(std::round(4.0 * std::log2(n)) / 4.0);
+}
+
+/** The points (light view) of the part of the hull of `points` with y in [y.lo, y.hi]: those
+ *  inside, and where the segments between two of them cross y = y.lo or y = y.hi (every edge
+ *  of the hull is such a segment, and every such crossing lies in the hull). */
+std::vector<osg::Vec3d> slabPoints(const std::vector<osg::Vec3d>& points, const Range& y)
+{
+    std::vector<osg::Vec3d> inside;
+    for (const osg::Vec3d& p : points)
+        if (p.y() >= y.lo && p.y() <= y.hi) inside.push_back(p);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t j = i + 1; j < points.size(); ++j)
+            for (double plane : {y.lo, y.hi})
+            {
+                const osg::Vec3d &a = points[i], &b = points[j];
+                if ((a.y() - plane) * (b.y() - plane) < 0.0)
+                    inside.push_back(a + (b - a) * ((plane - a.y()) / (b.y() - a.y())));
+            }
+    return inside;
+}
+
+/** The warp's projection in the light view whose origin is the centre (y: the axis, depth
+ *  -z): x / y over s, 1 / y over t and the depth over y over e, each mapped onto [-1, 1]. */
+osg::Matrixd warpProjection(const Range& s, const Range& t, const Range& e)
+{
+    const double sc = 0.5 * (s.lo + s.hi), sh = 0.5 * (s.hi - s.lo);
+    const double tc = 0.5 * (t.lo + t.hi), th = 0.5 * (t.hi - t.lo);
+    const double ec = 0.5 * (e.lo + e.hi), eh = 0.5 * (e.hi - e.lo);
+    osg::Matrixd p(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // row-vector: clip = q * p
+    p(0, 0) = 1.0 / sh, p(1, 0) = -sc / sh;                         // x: (x - sc y) / sh
+    p(1, 1) = tc / th, p(3, 1) = -1.0 / th;                         // y: (tc y - 1) / th
+    p(2, 2) = -1.0 / eh, p(1, 2) = -ec / eh;                        // z: (-z - ec y) / eh
+    p(1, 3) = 1.0;                                                  // w: y
+    return p;
+}
+
+/** The light-view ranges of the region (x, y, depth) and of the casters' box. */
+struct LightRanges
+{
+    Range rx, ry, rDepth, cx, cy, cDepth;
+    std::vector<osg::Vec3d> region; ///< the region's points in the light view
+};
+
+LightRanges lightRanges(const osg::Matrixd& view, const std::vector<osg::Vec3d>& region,
+                        const osg::BoundingBoxd& casters)
+{
+    LightRanges r;
+    for (const osg::Vec3d& p : region)
+    {
+        const osg::Vec3d q = p * view;
+        r.region.push_back(q);
+        r.rx.expand(q.x()), r.ry.expand(q.y()), r.rDepth.expand(-q.z());
+    }
+    for (const osg::Vec3d& p : boxCorners(casters))
+    {
+        const osg::Vec3d q = p * view;
+        r.cx.expand(q.x()), r.cy.expand(q.y()), r.cDepth.expand(-q.z());
+    }
+    return r;
+}
+
+/** The range of x / y over the box [x] x [y] (y > 0). */
+Range ratioRange(const Range& x, const Range& y)
+{
+    Range s;
+    for (double a : {x.lo, x.hi})
+        for (double b : {y.lo, y.hi}) s.expand(a / b);
+    return s;
+}
+
+} // namespace
+
+LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const std::vector<osg::Vec3d>& region,
+                                         const osg::BoundingBoxd& casters, unsigned int mapSize, const osg::Vec3d& eye,
+                                         const osg::Vec3d& viewDirection)
+{
+    osg::Matrixd rotation;
+    double sinGamma = 0.0;
+    osg::Vec3d d = towardLight;
+    if (region.empty() || !casters.valid() || !finite(d) || d.normalize() == 0.0 || !finite(eye) ||
+        !finite(viewDirection) || !warpRotation(d, viewDirection, rotation, sinGamma))
+        return fitDirectionalFrustum(towardLight, region, casters, mapSize);
+    const double n = warpDistance(region, eye, viewDirection, sinGamma);
+    const LightRanges r = lightRanges(rotation, region, casters);
+    const Range y{std::max(r.ry.lo, r.cy.lo), std::min(r.ry.hi, r.cy.hi)};
+    if (!(n > 0.0) || !std::isfinite(n) || y.empty() || n > WARP_MAX_NEAR_RATIO * (y.hi - y.lo))
+        return fitDirectionalFrustum(towardLight, region, casters, mapSize);
+
+    // The centre, on a grid of n / 8: laterally at the eye, n or a little more behind the region.
+    const double step = n / WARP_CENTRE_STEPS;
+    const osg::Vec3d eyeInLight = eye * rotation;
+    const double depthMid = 0.5 * (r.cDepth.lo + r.rDepth.hi);
+    const double depthStep = stepUp(std::max(r.rDepth.hi - r.cDepth.lo, 1e-9 * (1.0 + std::fabs(depthMid))));
+    const osg::Vec3d centre(std::round(eyeInLight.x() / step) * step, std::floor((y.lo - n) / step) * step,
+                            -std::round(depthMid / depthStep) * depthStep);
+    const Range u{y.lo - centre.y(), y.hi - centre.y()};
+
+    Range s; // x / u over the region's part within the casters' extent along the axis ...
+    for (const osg::Vec3d& p : slabPoints(r.region, y)) s.expand((p.x() - centre.x()) / (p.y() - centre.y()));
+    const Range cs = ratioRange({r.cx.lo - centre.x(), r.cx.hi - centre.x()}, u); // ... and the casters'
+    s = {std::max(s.lo, cs.lo), std::min(s.hi, cs.hi)};
+    LightFrustum f;
+    if (s.empty() || r.cDepth.lo > r.rDepth.hi) return f;
+    const double texels = std::max(1u, mapSize);
+    s = snapToTexels(s, texels);
+    const Range t = snapToTexels({1.0 / u.hi, 1.0 / u.lo}, texels);
+
+    // The depth over u: from the casters nearest the light to the farthest receiver, anywhere
+    // along the axis the map covers.
+    const double zNear = r.cDepth.lo + centre.z(), zFar = r.rDepth.hi + centre.z();
+    const double margin = 1e-3 * (zFar - zNear) + 1e-9 * (std::fabs(zNear) + std::fabs(zFar));
+    const Range e = ratioRange({zNear - margin, zFar + margin}, {1.0 / t.hi, 1.0 / t.lo});
+    f.view = rotation * osg::Matrixd::translate(-centre);
+    f.projection = warpProjection(s, t, e);
+    f.warped = true;
+    f.valid = true;
+    return f;
+}
+
 bool needsCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region, double maxFovDeg)
 {
     if (light.type != LightDescription::POINT || region.empty()) return false;

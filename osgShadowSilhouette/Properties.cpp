@@ -102,6 +102,11 @@ std::vector<PropertyInfo> algorithmRows()
          "and HYBRID's edge masks ([docs/animation.md](docs/animation.md#silhouette-edges-found-on-the-gpu)); "
          "SHADOW_VOLUME and HYBRID's stencil volumes "
          "([docs/animation.md](docs/animation.md#volumes-extruded-on-the-gpu))"},
+        {OSS_PROPERTY(PerspectiveWarp), P::BOOL, 0, 1, 0, 1, "", {},
+         "warp directional lights' maps in perspective toward the eye (light space perspective shadow maps)",
+         "SHADOW_MAP and SILHOUETTE_MAP under `FILTER_PCF_2X2` and `FILTER_PCF`; the warp's axis, centre and "
+         "texels move in steps, so that shadows hold still while the eye moves; elsewhere one warning and "
+         "uniform maps ([docs/outdoor.md](docs/outdoor.md#the-perspective-warp-property-perspectivewarp))"},
     };
 }
 

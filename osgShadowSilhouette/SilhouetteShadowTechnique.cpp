@@ -68,13 +68,14 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode) : SilhouetteShad
 SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechnique& copy, const osg::CopyOp& copyop)
     : osgShadow::ShadowTechnique(copy, copyop), _mode(copy._mode), _properties(copy._properties),
       _shadowMapSize(copy._shadowMapSize), _polygonOffsetFactor(copy._polygonOffsetFactor),
-      _polygonOffsetUnits(copy._polygonOffsetUnits), _lightNum(copy._lightNum), _maxShadowLights(copy._maxShadowLights),
-      _baseTextureUnit(copy._baseTextureUnit), _useDefaultShading(copy._useDefaultShading),
-      _perPixelLighting(copy._perPixelLighting), _debugView(copy._debugView), _debugLight(copy._debugLight),
-      _blockerCulling(copy._blockerCulling), _hybridMethod(copy._hybridMethod), _gpuExtraction(copy._gpuExtraction),
-      _hybridEdgeMask(copy._hybridEdgeMask), _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset),
-      _filter(copy._filter), _filterWindow(copy._filterWindow), _lightSize(copy._lightSize),
-      _softSamples(copy._softSamples), _tuning(copy._tuning), _warnings(new detail::WarningLog)
+      _polygonOffsetUnits(copy._polygonOffsetUnits), _perspectiveWarp(copy._perspectiveWarp), _lightNum(copy._lightNum),
+      _maxShadowLights(copy._maxShadowLights), _baseTextureUnit(copy._baseTextureUnit),
+      _useDefaultShading(copy._useDefaultShading), _perPixelLighting(copy._perPixelLighting),
+      _debugView(copy._debugView), _debugLight(copy._debugLight), _blockerCulling(copy._blockerCulling),
+      _hybridMethod(copy._hybridMethod), _gpuExtraction(copy._gpuExtraction), _hybridEdgeMask(copy._hybridEdgeMask),
+      _depthPrepass(copy._depthPrepass), _shadowRayOffset(copy._shadowRayOffset), _filter(copy._filter),
+      _filterWindow(copy._filterWindow), _lightSize(copy._lightSize), _softSamples(copy._softSamples),
+      _tuning(copy._tuning), _warnings(new detail::WarningLog)
 {
 }
 
@@ -187,6 +188,17 @@ void SilhouetteShadowTechnique::setDebugView(DebugView view)
 void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
 {
     if (acceptValue("DebugLight", index, _debugLight)) _debugLight = index;
+}
+
+void SilhouetteShadowTechnique::setPerspectiveWarp(bool flag)
+{
+    _perspectiveWarp = flag;
+}
+
+bool SilhouetteShadowTechnique::warpsMaps(Mode mode) const
+{
+    return _perspectiveWarp && (mode == SHADOW_MAP || mode == SILHOUETTE_MAP) &&
+           (_filter == FILTER_PCF_2X2 || _filter == FILTER_PCF);
 }
 
 void SilhouetteShadowTechnique::setBlockerCulling(bool flag)

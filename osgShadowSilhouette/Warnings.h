@@ -39,6 +39,7 @@ enum WarningKey
     WARN_BLENDED_VISIBILITY,
     WARN_FILTER_MODE,
     WARN_STENCIL_SOFT,
+    WARN_WARP_MODE,
 };
 
 /** Raises warning @p key with @p message (the technique's warnOnce()). */

@@ -1,0 +1,164 @@
+// The perspective-warped directional frustum (fitWarpedDirectionalFrustum()): what it covers,
+// that the light's rays stay the map's depth axis, where its texels are small, and that its
+// texel grid holds still while the eye moves a little.
+#include <osgShadowSilhouette/LightSpace>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace osgShadowSilhouette;
+
+namespace {
+
+const unsigned int MAP = 2048;
+const osg::BoundingBoxd GROUND(-600, -600, 0, 600, 600, 20); // receivers and casters: a 1.2 km field, 20 m high
+const osg::Vec3d TOWARD_SUN = [] {
+    osg::Vec3d d(1.0, -0.2, 0.21); // low, from the east
+    d.normalize();
+    return d;
+}();
+
+/** An eye 1.7 m above the ground at (x, y) looking along heading (degrees from +y toward +x),
+ *  2.5 degrees down; fovy 50, 4:3, out to 1100 m. */
+struct Eye
+{
+    osg::Vec3d position, direction;
+    std::vector<osg::Vec3d> region;
+};
+
+Eye eyeAt(double x, double y, double headingDeg)
+{
+    Eye e;
+    const double h = osg::DegreesToRadians(headingDeg), down = osg::DegreesToRadians(2.5);
+    e.position = {x, y, 1.7};
+    e.direction = {std::sin(h) * std::cos(down), std::cos(h) * std::cos(down), -std::sin(down)};
+    const osg::Matrixd view = osg::Matrixd::lookAt(e.position, e.position + e.direction, {0, 0, 1});
+    e.region = visibleRegion(frustumCorners(view, osg::Matrixd::perspective(50, 4.0 / 3.0, 0.5, 1100)), GROUND);
+    return e;
+}
+
+LightFrustum warped(const Eye& e)
+{
+    return fitWarpedDirectionalFrustum(TOWARD_SUN, e.region, GROUND, MAP, e.position, e.direction);
+}
+
+osg::Vec3d texture(const LightFrustum& f, const osg::Vec3d& p)
+{
+    const osg::Vec4d q = osg::Vec4d(p, 1.0) * f.worldToTexture();
+    EXPECT_GT(q.w(), 0.0);
+    return {q.x() / q.w(), q.y() / q.w(), q.z() / q.w()};
+}
+
+/** Texels of the map per metre along the ground's x axis at p. */
+double texelsPerMetre(const LightFrustum& f, const osg::Vec3d& p)
+{
+    const double h = 1e-3;
+    const osg::Vec3d a = texture(f, p), b = texture(f, p + osg::Vec3d(h, 0, 0)), c = texture(f, p + osg::Vec3d(0, h, 0));
+    return MAP * std::max(std::hypot(b.x() - a.x(), b.y() - a.y()), std::hypot(c.x() - a.x(), c.y() - a.y())) / h;
+}
+
+double fraction(double v)
+{
+    return v - std::floor(v);
+}
+
+} // namespace
+
+TEST(WarpedFrustum, HoldsTheRegionAndWhatCanShadowIt)
+{
+    const Eye e = eyeAt(10, -300, 20);
+    const LightFrustum f = warped(e);
+    ASSERT_TRUE(f.valid);
+    ASSERT_TRUE(f.warped);
+    ASSERT_FALSE(e.region.empty());
+    for (const osg::Vec3d& p : e.region)
+    {
+        // Every point the view sees, and the top of the casters' box on the way to the sun
+        // (the nearest caster that can shadow it), fall inside the map and its depth range;
+        // both on one texel: the sun's rays are the map's depth axis, as in a uniform map.
+        const osg::Vec3d top = p + TOWARD_SUN * ((GROUND.zMax() - p.z()) / TOWARD_SUN.z());
+        const osg::Vec3d a = texture(f, p), b = texture(f, top);
+        for (const osg::Vec3d& t : {a, b})
+            for (int i = 0; i < 3; ++i)
+            {
+                EXPECT_GE(t[i], 0.0) << i;
+                EXPECT_LE(t[i], 1.0) << i;
+            }
+        EXPECT_NEAR(a.x() * MAP, b.x() * MAP, 1e-6);
+        EXPECT_NEAR(a.y() * MAP, b.y() * MAP, 1e-6);
+        if (top.z() > p.z() + 1.0)
+        {
+            EXPECT_LT(b.z(), a.z()); // nearer the sun: a smaller depth
+        }
+    }
+}
+
+TEST(WarpedFrustum, TexelsAreSmallNearTheEyeAndLargeFarAway)
+{
+    const Eye e = eyeAt(10, -300, 20);
+    const LightFrustum f = warped(e);
+    const LightFrustum uniform = fitDirectionalFrustum(TOWARD_SUN, e.region, GROUND, MAP);
+    ASSERT_TRUE(f.valid && uniform.valid);
+    const osg::Vec3d near = e.position + osg::Vec3d(e.direction.x(), e.direction.y(), 0) * 6.0 - osg::Vec3d(0, 0, 1.7);
+    const osg::Vec3d far = e.position + osg::Vec3d(e.direction.x(), e.direction.y(), 0) * 800.0 - osg::Vec3d(0, 0, 1.7);
+    const double flat = texelsPerMetre(uniform, near);
+    EXPECT_NEAR(texelsPerMetre(uniform, far), flat, 1e-3 * flat);
+    // 1.5 texels per metre in the uniform map; the warp puts more than 10 times as many 6 m
+    // ahead of the eye, and fewer 800 m away.
+    EXPECT_GT(texelsPerMetre(f, near), 10.0 * flat);
+    EXPECT_LT(texelsPerMetre(f, far), flat);
+}
+
+TEST(WarpedFrustum, TexelGridHoldsStillWhileTheEyeMovesALittle)
+{
+    // A world point keeps its position within its texel while the eye walks 5 cm and turns
+    // by a tenth of a degree (the map may slide by whole texels): the warp's axis, centre and
+    // texel sizes move in steps.
+    const osg::Vec3d probe(40.123, -210.456, 0.0);
+    const LightFrustum f0 = warped(eyeAt(10, -300, 20));
+    ASSERT_TRUE(f0.valid && f0.warped);
+    const osg::Vec3d t0 = texture(f0, probe) * MAP;
+    for (const Eye& e : {eyeAt(10.02, -299.95, 20), eyeAt(10, -300, 20.1), eyeAt(10.03, -299.96, 19.95)})
+    {
+        const LightFrustum f = warped(e);
+        ASSERT_TRUE(f.valid && f.warped);
+        const osg::Vec3d t = texture(f, probe) * MAP;
+        EXPECT_NEAR(fraction(t.x()), fraction(t0.x()), 1e-6);
+        EXPECT_NEAR(fraction(t.y()), fraction(t0.y()), 1e-6);
+    }
+    // A walk of 30 m moves the grid (the test above is not vacuous).
+    const osg::Vec3d moved = texture(warped(eyeAt(10, -270, 20)), probe) * MAP;
+    EXPECT_GT(std::hypot(fraction(moved.x()) - fraction(t0.x()), fraction(moved.y()) - fraction(t0.y())), 0.01);
+}
+
+TEST(WarpedFrustum, LookingAlongTheLightKeepsTheUniformMap)
+{
+    // Looking toward the sun (within 10 degrees of its direction) a warp gains nothing.
+    Eye e = eyeAt(0, 0, 0);
+    e.direction = -TOWARD_SUN;
+    const osg::Matrixd view = osg::Matrixd::lookAt(e.position, e.position + e.direction, {0, 0, 1});
+    e.region = visibleRegion(frustumCorners(view, osg::Matrixd::perspective(50, 4.0 / 3.0, 0.5, 1100)), GROUND);
+    const LightFrustum f = warped(e);
+    const LightFrustum uniform = fitDirectionalFrustum(TOWARD_SUN, e.region, GROUND, MAP);
+    ASSERT_TRUE(f.valid);
+    EXPECT_FALSE(f.warped);
+    EXPECT_EQ(f.projection, uniform.projection);
+    EXPECT_EQ(f.view, uniform.view);
+}
+
+TEST(WarpedFrustum, NonFiniteEyeKeepsTheUniformMap)
+{
+    Eye e = eyeAt(10, -300, 20);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (int which = 0; which < 2; ++which)
+    {
+        const osg::Vec3d position = which == 0 ? osg::Vec3d(nan, 0, 1) : e.position;
+        const osg::Vec3d direction = which == 1 ? osg::Vec3d(0, nan, 0) : e.direction;
+        const LightFrustum f = fitWarpedDirectionalFrustum(TOWARD_SUN, e.region, GROUND, MAP, position, direction);
+        ASSERT_TRUE(f.valid);
+        EXPECT_FALSE(f.warped);
+        EXPECT_FALSE(f.projection.isNaN());
+    }
+}
