@@ -183,7 +183,8 @@ const std::vector<std::pair<std::string, std::string>>& propertyOptions()
         {"--filter", "Filter"},
         {"--filter-window", "FilterWindow"},
         {"--soft-samples", "SoftSamples"},
-        {"--warp", "PerspectiveWarp"}};
+        {"--warp", "PerspectiveWarp"},
+        {"--cascades", "Cascades"}};
     return options;
 }
 

@@ -73,7 +73,8 @@ struct ViewData : public osg::Referenced
     osg::ref_ptr<osg::StateSet> receiverPassStateSet; ///< inside receiverStateSet: the stencil modes' lighting program
     osg::ref_ptr<osg::StateSet> prepassStateSet;      ///< inside receiverStateSet: the depth prepass (DepthPrepass)
     osg::ref_ptr<osg::Depth> prepassDepth;            ///< the eye pass's LEQUAL after the prepass
-    osg::ref_ptr<osg::Uniform> numLights, lightIndex, shadowSlot, eyeToShadow, maskLight, slotOwner, slotCore;
+    osg::ref_ptr<osg::Uniform> numLights, lightIndex, shadowSlot, eyeToShadow, maskLight, slotOwner, slotCore,
+        slotDepths;
     osg::ref_ptr<osg::Uniform> filterScale; ///< PCSS: each slot's penumbraScale() (SoftFilter.h)
     osg::ref_ptr<osg::Uniform> listCapacity, listPerspective, listRayFrame; ///< HYBRID with triangle lists
     osg::ref_ptr<osg::Uniform> listLight, listLightSize, listSoftSamples, listEyeToPattern; ///< ... and soft shadows

@@ -263,13 +263,13 @@ public:
 
     osg::Node* depthPassQueries(ModeFrame& mf, LightPass& pass) override
     {
-        // Blocker culling tests casters against this map alone: not for a cube face, which
-        // sees only part of the light's casters; triangle lists need no volumes to skip; and
+        // Blocker culling tests casters against this map alone: not for a cube face or a
+        // cascade, which sees only part of the light's casters; triangle lists need no volumes to skip; and
         // not with the edge mask: a caster the map's samples call hidden may still shadow
         // what shows through gaps thinner than a texel, which is what the edge mask resolves.
         const PassSettings& settings = mf.settings;
-        const bool blockers = settings.blockerCulling && !settings.hybridEdgeMask && !mf.frame.triangleLists &&
-                              pass.frustum.faceCore == 0.0;
+        const bool blockers =
+            settings.blockerCulling && !settings.hybridEdgeMask && !mf.frame.triangleLists && !pass.frustum.partial();
         if (!blockers) return nullptr; // and cullDepthMap() drops the slot's queries
         if (!pass.blockers) pass.blockers = new BlockerQueries;
         pass.blockers->update(mf.frame.casterList);

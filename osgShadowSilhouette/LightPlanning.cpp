@@ -39,15 +39,48 @@ std::vector<int> assignShadowSlots(const std::vector<FoundLight>& lights, const 
 }
 
 /** Fits the light frustum of one light to the casters that can shadow the visible region. */
-LightFrustum fitLightFrustum(const LightDescription& light, const FrameContext& frame, const SlotBudget& budget)
+LightFrustum fitLightFrustum(const LightDescription& light, const FrameContext& frame, const SlotBudget& budget,
+                             double warpNearFloor = 0.0)
 {
     if (light.type != LightDescription::DIRECTIONAL) return fitPerspectiveFrustum(light, frame.region, frame.casters);
     if (!budget.warp || !frame.view.valid)
         return fitDirectionalFrustum(light.direction, frame.region, frame.casters, budget.mapSize);
     const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(frame.view.view);
-    return fitWarpedDirectionalFrustum(light.direction, frame.region, frame.casters, budget.mapSize,
-                                       osg::Vec3d() * eyeToWorld,
-                                       osg::Matrixd::transform3x3(osg::Vec3d(0.0, 0.0, -1.0), eyeToWorld));
+    return fitWarpedDirectionalFrustum(
+        light.direction, frame.region, frame.casters, budget.mapSize, osg::Vec3d() * eyeToWorld,
+        osg::Matrixd::transform3x3(osg::Vec3d(0.0, 0.0, -1.0), eyeToWorld), warpNearFloor);
+}
+
+/** A directional light's cascades (budget.cascades > 1): the view's visible region cut into
+ *  ranges of view depth (cascadeSplits()), each fitted as the light's only map would be (warped
+ *  or not); each answers for its range (the first from 0, the last to infinity). A range with
+ *  nothing to shadow gets no map: its points are lit. Empty: nothing to shadow at all. */
+std::vector<LightFrustum> fitCascades(const LightDescription& light, const FrameContext& frame,
+                                      const SlotBudget& budget)
+{
+    double lo = std::numeric_limits<double>::max(), hi = 0.0;
+    for (const osg::Vec3d& p : frame.region)
+    {
+        const double depth = -(p * frame.view.view).z();
+        lo = std::min(lo, depth), hi = std::max(hi, depth);
+    }
+    std::vector<LightFrustum> cascades;
+    if (!(hi > 0.0)) return cascades;
+    const std::vector<double> splits = cascadeSplits(std::max(lo, 0.0), hi, budget.cascades);
+    FrameContext slice;
+    slice.casters = frame.casters;
+    slice.view = frame.view;
+    for (std::size_t i = 0; i + 1 < splits.size(); ++i)
+    {
+        const osg::Matrixd projection = withDepthRange(frame.view.projection, splits[i], splits[i + 1]);
+        slice.region = visibleRegion(frustumCorners(frame.view.view, projection), frame.receivers);
+        LightFrustum f = slice.region.empty() ? LightFrustum() : fitLightFrustum(light, slice, budget, 1e-3 * hi);
+        if (!f.valid) continue;
+        f.viewDepthFrom = i == 0 ? 0.0 : splits[i];
+        f.viewDepthTo = i + 2 == splits.size() ? std::numeric_limits<double>::infinity() : splits[i + 1];
+        cascades.push_back(f);
+    }
+    return cascades;
 }
 
 /** The frusta of a light: one, or a point light's cube faces, which take the slots from
@@ -76,6 +109,20 @@ std::vector<LightFrustum> planLightFrusta(const FrameContext& frame, const Light
                                       std::to_string(slotLimit - nextFreeSlot + 1) + " of the " +
                                       std::to_string(slotLimit) +
                                       " shadow slots are free; it gets one perspective map (see BaseTextureUnit)");
+            frusta.clear();
+        }
+    }
+    if (budget.cascades > 1 && light.type == LightDescription::DIRECTIONAL && frame.view.valid)
+    {
+        frusta = fitCascades(light, frame, budget);
+        if (frusta.empty()) return {LightFrustum()}; // nothing to shadow: the light is lit unshadowed
+        if (frusta.size() > 1 && nextFreeSlot + frusta.size() - 1 > budget.slotLimit)
+        {
+            warn(WARN_CASCADE_SLOTS, "light " + std::to_string(light.lightNum) + " needs " +
+                                         std::to_string(frusta.size()) + " cascades and only " +
+                                         std::to_string(budget.slotLimit - nextFreeSlot + 1) + " of the " +
+                                         std::to_string(budget.slotLimit) +
+                                         " shadow slots are free; it gets one map (see BaseTextureUnit)");
             frusta.clear();
         }
     }

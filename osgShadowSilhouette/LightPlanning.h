@@ -27,6 +27,7 @@ struct SlotBudget
     bool cubeFaces = true;            ///< point lights may take cube faces (not SHADOW_VOLUME)
     double faceMarginTexels = 4.0;    ///< how far a cube face's map reaches past its square (the filter's reach)
     bool warp = false;                ///< directional lights get maps warped toward the eye (PerspectiveWarp)
+    unsigned int cascades = 1;        ///< maps per directional light, each for a range of view depths (Cascades)
 };
 
 /** Whether @p light casts a shadow under LightNum @p lightNum (-1: every light does). */

@@ -300,7 +300,7 @@ namespace {
 
 constexpr double WARP_TURN_STEPS = 32.0;      // the warp's axis turns in steps of 1/32 turn
 constexpr double WARP_MIN_SIN_GAMMA = 0.17;   // ~10 degrees between the view and the light
-constexpr double WARP_MIN_NEAR_SHARE = 1e-3;  // z_n is at least this share of z_f
+constexpr double WARP_MIN_NEAR_SHARE = 1e-3;  // z_n is at least this share of z_f (cascadeSplits() too)
 constexpr double WARP_MAX_NEAR_RATIO = 100.0; // n beyond this many region lengths: uniform
 constexpr double WARP_CENTRE_STEPS = 8.0;     // the centre moves on a grid of n / 8
 
@@ -338,13 +338,14 @@ bool warpRotation(const osg::Vec3d& d, osg::Vec3d view, osg::Matrixd& rotation, 
 
 /** Wimmer's n_opt for the region seen from eye along view, in steps of 2^(1/4); 0 if the
  *  region does not lie ahead of the eye. */
-double warpDistance(const std::vector<osg::Vec3d>& region, const osg::Vec3d& eye, osg::Vec3d view, double sinGamma)
+double warpDistance(const std::vector<osg::Vec3d>& region, const osg::Vec3d& eye, osg::Vec3d view, double sinGamma,
+                    double nearFloor)
 {
     view.normalize();
     Range z;
     for (const osg::Vec3d& p : region) z.expand((p - eye) * view);
     if (!(z.hi > 0.0)) return 0.0;
-    const double zn = std::max(z.lo, WARP_MIN_NEAR_SHARE * z.hi);
+    const double zn = std::max({z.lo, WARP_MIN_NEAR_SHARE * z.hi, nearFloor});
     const double n = (zn + std::sqrt(zn * z.hi)) / sinGamma;
     return std::exp2(std::round(4.0 * std::log2(n)) / 4.0);
 }
@@ -421,7 +422,7 @@ Range ratioRange(const Range& x, const Range& y)
 
 LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const std::vector<osg::Vec3d>& region,
                                          const osg::BoundingBoxd& casters, unsigned int mapSize, const osg::Vec3d& eye,
-                                         const osg::Vec3d& viewDirection)
+                                         const osg::Vec3d& viewDirection, double nearFloor)
 {
     osg::Matrixd rotation;
     double sinGamma = 0.0;
@@ -429,7 +430,7 @@ LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const st
     if (region.empty() || !casters.valid() || !finite(d) || d.normalize() == 0.0 || !finite(eye) ||
         !finite(viewDirection) || !warpRotation(d, viewDirection, rotation, sinGamma))
         return fitDirectionalFrustum(towardLight, region, casters, mapSize);
-    const double n = warpDistance(region, eye, viewDirection, sinGamma);
+    const double n = warpDistance(region, eye, viewDirection, sinGamma, nearFloor);
     const LightRanges r = lightRanges(rotation, region, casters);
     const Range y{std::max(r.ry.lo, r.cy.lo), std::min(r.ry.hi, r.cy.hi)};
     if (!(n > 0.0) || !std::isfinite(n) || y.empty() || n > WARP_MAX_NEAR_RATIO * (y.hi - y.lo))
@@ -438,10 +439,14 @@ LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const st
     // The centre, on a grid of n / 8: laterally at the eye, n or a little more behind the region.
     const double step = n / WARP_CENTRE_STEPS;
     const osg::Vec3d eyeInLight = eye * rotation;
-    const double depthMid = 0.5 * (r.cDepth.lo + r.rDepth.hi);
-    const double depthStep = stepUp(std::max(r.rDepth.hi - r.cDepth.lo, 1e-9 * (1.0 + std::fabs(depthMid))));
+    // The depth's origin at the eye's own (on a grid of 1/64 of the depth range): the map's
+    // depth (d - d_origin) / u changes across the light by (d - d_origin) / u^2 per unit of u,
+    // which the lookups' bias (the gradient's length) pays for; near the eye, where u is
+    // small, the receivers' d is close to the eye's.
+    const double eyeDepth = -eyeInLight.z();
+    const double depthStep = stepUp(std::max(r.rDepth.hi - r.cDepth.lo, 1e-9 * (1.0 + std::fabs(eyeDepth)))) / 64.0;
     const osg::Vec3d centre(std::round(eyeInLight.x() / step) * step, std::floor((y.lo - n) / step) * step,
-                            -std::round(depthMid / depthStep) * depthStep);
+                            -std::round(eyeDepth / depthStep) * depthStep);
     const Range u{y.lo - centre.y(), y.hi - centre.y()};
 
     Range s; // x / u over the region's part within the casters' extent along the axis ...
@@ -464,6 +469,21 @@ LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const st
     f.warped = true;
     f.valid = true;
     return f;
+}
+
+std::vector<double> cascadeSplits(double zNear, double zFar, unsigned int count, double lambda)
+{
+    count = std::max(1u, count);
+    const double zn = std::max(zNear, WARP_MIN_NEAR_SHARE * zFar);
+    std::vector<double> splits(count + 1);
+    for (unsigned int i = 0; i <= count; ++i)
+    {
+        const double share = double(i) / count;
+        splits[i] = lambda * zn * std::pow(zFar / zn, share) + (1.0 - lambda) * (zn + (zFar - zn) * share);
+    }
+    splits.front() = zNear;
+    splits.back() = zFar;
+    return splits;
 }
 
 bool needsCubeFaces(const LightDescription& light, const std::vector<osg::Vec3d>& region, double maxFovDeg)

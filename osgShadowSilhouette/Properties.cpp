@@ -107,6 +107,12 @@ std::vector<PropertyInfo> algorithmRows()
          "SHADOW_MAP and SILHOUETTE_MAP under `FILTER_PCF_2X2` and `FILTER_PCF`; the warp's axis, centre and "
          "texels move in steps, so that shadows hold still while the eye moves; elsewhere one warning and "
          "uniform maps ([docs/outdoor.md](docs/outdoor.md#the-perspective-warp-property-perspectivewarp))"},
+        {OSS_PROPERTY(Cascades), P::UINT, 1, 3, 1, 4, "", {},
+         "maps per directional light, each for a range of the view's depths (parallel split shadow maps)",
+         "the splits mix the logarithmic and the uniform split (weight 0.9 on the logarithmic); each map "
+         "answers for its range alone, warped under `PerspectiveWarp`; every mode with maps; each takes a "
+         "shadow slot, and a light the slots cannot hold gets one map, with a warning "
+         "([docs/outdoor.md](docs/outdoor.md#cascades-property-cascades))"},
     };
 }
 

@@ -68,8 +68,8 @@ SilhouetteShadowTechnique::SilhouetteShadowTechnique(Mode mode) : SilhouetteShad
 SilhouetteShadowTechnique::SilhouetteShadowTechnique(const SilhouetteShadowTechnique& copy, const osg::CopyOp& copyop)
     : osgShadow::ShadowTechnique(copy, copyop), _mode(copy._mode), _properties(copy._properties),
       _shadowMapSize(copy._shadowMapSize), _polygonOffsetFactor(copy._polygonOffsetFactor),
-      _polygonOffsetUnits(copy._polygonOffsetUnits), _perspectiveWarp(copy._perspectiveWarp), _lightNum(copy._lightNum),
-      _maxShadowLights(copy._maxShadowLights), _baseTextureUnit(copy._baseTextureUnit),
+      _polygonOffsetUnits(copy._polygonOffsetUnits), _perspectiveWarp(copy._perspectiveWarp), _cascades(copy._cascades),
+      _lightNum(copy._lightNum), _maxShadowLights(copy._maxShadowLights), _baseTextureUnit(copy._baseTextureUnit),
       _useDefaultShading(copy._useDefaultShading), _perPixelLighting(copy._perPixelLighting),
       _debugView(copy._debugView), _debugLight(copy._debugLight), _blockerCulling(copy._blockerCulling),
       _hybridMethod(copy._hybridMethod), _gpuExtraction(copy._gpuExtraction), _hybridEdgeMask(copy._hybridEdgeMask),
@@ -193,6 +193,11 @@ void SilhouetteShadowTechnique::setDebugLight(unsigned int index)
 void SilhouetteShadowTechnique::setPerspectiveWarp(bool flag)
 {
     _perspectiveWarp = flag;
+}
+
+void SilhouetteShadowTechnique::setCascades(unsigned int count)
+{
+    if (acceptValue("Cascades", count, _cascades)) _cascades = count;
 }
 
 bool SilhouetteShadowTechnique::warpsMaps(Mode mode) const

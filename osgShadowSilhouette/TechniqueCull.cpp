@@ -197,6 +197,7 @@ void TechniqueCull::planSlots()
     budget.slotLimit = _t.slotCapacity(Technique::pairedSlots(_frame.mode));
     budget.cubeFaces = _frame.mode != Technique::SHADOW_VOLUME; // the volumes reach every direction
     budget.warp = _t.warpsMaps(_frame.mode);
+    budget.cascades = budget.cubeFaces ? _t._cascades : 1;
     if (_t._perspectiveWarp && !budget.warp)
         _t.warnOnce(WARN_WARP_MODE, std::string("PerspectiveWarp applies to SHADOW_MAP and SILHOUETTE_MAP under "
                                                 "FILTER_PCF_2X2 or FILTER_PCF; mode ") +
@@ -310,6 +311,8 @@ void TechniqueCull::cullLight(const LightDescription& light, unsigned int slot, 
         const unsigned int s = k == 0 ? slot : firstFaceSlot + static_cast<unsigned int>(k - 1);
         _vd.slotOwner->setElement(s, int(slot));
         _vd.slotCore->setElement(s, float(frusta[k].faceCore));
+        _vd.slotDepths->setElement(
+            s, osg::Vec2f(float(frusta[k].viewDepthFrom), float(std::min<double>(frusta[k].viewDepthTo, ALL_DEPTHS))));
         cullSlot(light, s, frusta[k], secondMaps[s]);
     }
 }

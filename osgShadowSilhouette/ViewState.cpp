@@ -25,6 +25,7 @@ void createLightUniforms(ViewData& vd, unsigned int slots)
     vd.eyeToShadow = new osg::Uniform(osg::Uniform::FLOAT_MAT4, shader::EYE_TO_SHADOW, slots);
     vd.slotOwner = new osg::Uniform(osg::Uniform::INT, shader::SLOT_OWNER, slots);
     vd.slotCore = new osg::Uniform(osg::Uniform::FLOAT, shader::SLOT_CORE, slots);
+    vd.slotDepths = new osg::Uniform(osg::Uniform::FLOAT_VEC2, shader::SLOT_DEPTHS, slots);
     vd.filterScale = new osg::Uniform(osg::Uniform::FLOAT_VEC2, shader::FILTER_SCALE, slots);
     vd.maskLight = new osg::Uniform(shader::MASK_LIGHT, 0);
     for (int i = 0; i < shader::MAX_SCENE_LIGHTS; ++i)
@@ -90,9 +91,10 @@ osg::ref_ptr<ViewData> createViewData(const ViewLayout& layout)
     createListUniforms(*vd, slots);
     for (osg::Uniform* u :
          {vd->numLights.get(), vd->lightIndex.get(), vd->shadowSlot.get(), vd->eyeToShadow.get(), vd->maskLight.get(),
-          samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->filterScale.get(),
-          vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(), vd->lookupBiasFrame.get(),
-          vd->listLight.get(), vd->listLightSize.get(), vd->listSoftSamples.get(), vd->listEyeToPattern.get()})
+          samplers.get(), silhouetteSamplers.get(), vd->slotOwner.get(), vd->slotCore.get(), vd->slotDepths.get(),
+          vd->filterScale.get(), vd->listCapacity.get(), vd->listPerspective.get(), vd->listRayFrame.get(),
+          vd->lookupBiasFrame.get(), vd->listLight.get(), vd->listLightSize.get(), vd->listSoftSamples.get(),
+          vd->listEyeToPattern.get()})
         ss->addUniform(u);
     ss->addUniform(new osg::Uniform(shader::BASE_TEXTURE, 0));
     ss->addUniform(new osg::Uniform(shader::LIST_RAY_OFFSET_PER_DISTANCE, shader::LIST_RAY_OFFSET_DISTANCE));
@@ -132,7 +134,7 @@ void updateViewUniforms(osgUtil::CullVisitor& cv, ViewData& vd, const std::vecto
         vd.eyeToShadow->setElement(s, osg::Matrixf(eyeToWorld * vd.passes[s].frustum.worldToTexture()));
         if (!vd.slotInUse[s]) continue;
         used = int(s) + 1;
-        faces = faces || vd.passes[s].frustum.faceCore > 0.0;
+        faces = faces || vd.passes[s].frustum.partial();
     }
     eye.usedSlots = static_cast<unsigned int>(used);
     eye.skippedSlots = 0;
@@ -228,6 +230,7 @@ void resetSlots(ViewData& vd, unsigned int capacity, osg::Texture2D* litTexture)
         if (slot < capacity) bindDepthMap(vd, slot, litTexture);
         vd.slotOwner->setElement(slot, int(slot));
         vd.slotCore->setElement(slot, 0.0f);
+        vd.slotDepths->setElement(slot, osg::Vec2f(0.0f, ALL_DEPTHS));
         vd.filterScale->setElement(slot, osg::Vec2f());
         vd.listLightSize->setElement(slot, 0.0f);
         vd.slotInUse[slot] = false;

@@ -18,6 +18,9 @@
 namespace osgShadowSilhouette {
 namespace detail {
 
+/** oss_slotDepths' far end for a map that answers at every view depth (a float's range). */
+constexpr float ALL_DEPTHS = 3.0e38f;
+
 /** How a view's receiver state is laid out: its shadow slots and their texture units. */
 struct ViewLayout
 {

@@ -40,6 +40,7 @@ enum WarningKey
     WARN_FILTER_MODE,
     WARN_STENCIL_SOFT,
     WARN_WARP_MODE,
+    WARN_CASCADE_SLOTS,
 };
 
 /** Raises warning @p key with @p message (the technique's warnOnce()). */

@@ -195,15 +195,22 @@ vec2 oss_listSizedTerm(int s, vec4 p, bool walk)
 #endif
 
 #ifdef OSS_CUBE_FACES
-// A point light's cube faces (docs/lights.md): each face's map answers only for its own
-// 90-degree square of directions, a few texels inside its slightly wider map; the light's
-// term is the product of its faces' terms, 1 outside each face's own directions.
+// A light with several maps: a point light's cube faces (docs/lights.md), each answering
+// only for its own 90-degree square of directions, a few texels inside its slightly wider
+// map; or a directional light's cascades (docs/outdoor.md), each answering for its own range
+// of view depths. The light's term is the product of its maps' terms, 1 outside each map's
+// own part.
 uniform int oss_slotOwner[OSS_MAX_SHADOW_SLOTS];   // the light slot whose term a slot's map multiplies
 uniform float oss_slotCore[OSS_MAX_SHADOW_SLOTS];  // cube face: half side of its own square; 0: whole map
+uniform vec2 oss_slotDepths[OSS_MAX_SHADOW_SLOTS]; // cascade: its view depths [x, y); (0, 3e38): all
 
-// term where the eye-space position lies in slot `slot`'s own directions, else 1.
+// term where the eye-space position lies in slot `slot`'s own part, else 1.
 float oss_faceGate(int slot, vec4 eyePosition, float term)
 {
+    float depth = -eyePosition.z / eyePosition.w;
+    vec2 depths = oss_slotDepths[slot];
+    if (depth < depths.x || depth >= depths.y)
+        return 1.0;
     float core = oss_slotCore[slot];
     vec4 c = oss_eyeToShadow[slot] * eyePosition;
     vec2 d = abs(c.xy / c.w - 0.5);

@@ -5,6 +5,7 @@
 
 #include "osgShadowSilhouette/LightPlanning.h"
 
+#include <limits>
 #include <map>
 
 namespace {
@@ -32,6 +33,20 @@ FrameContext fieldOfBoxes()
 {
     FrameContext frame = groundWithBox();
     frame.casters = frame.receivers;
+    return frame;
+}
+
+/** A 200 x 200 ground, 5 high, casters all over it, seen from 1.7 above it at its south edge
+ *  looking north: 0.5 to 150 deep, fovy 50, 4:3. */
+FrameContext viewAcrossAField()
+{
+    FrameContext frame;
+    frame.receivers = osg::BoundingBoxd(-100, -100, 0, 100, 100, 5);
+    frame.casters = frame.receivers;
+    frame.view.valid = true;
+    frame.view.view = osg::Matrixd::lookAt(osg::Vec3d(0, -95, 1.7), osg::Vec3d(0, 0, 1.7), osg::Vec3d(0, 0, 1));
+    frame.view.projection = osg::Matrixd::perspective(50, 4.0 / 3.0, 0.5, 150);
+    frame.region = oss::visibleRegion(oss::frustumCorners(frame.view.view, frame.view.projection), frame.receivers);
     return frame;
 }
 
@@ -202,4 +217,76 @@ TEST(LightPlanning, MissingLightNumAndDebugLightWarnNamingTheLights)
     said.clear();
     oss::detail::warnAboutMissingLights({directional(0, {0, 0, 1})}, 0, false, 5, warn); // no debug view
     EXPECT_TRUE(said.empty());
+}
+
+TEST(LightPlanning, ADirectionalLightTakesOneSlotPerCascade)
+{
+    // Three cascades of the first light: its own slot 0, the second light slot 1, the further
+    // cascades slots 2 and 3. Their view depths follow cascadeSplits() over the region's depth
+    // range and cover [0, inf) without a gap; each holds its part of the region, with
+    // smaller texels than the next.
+    SlotBudget budget;
+    budget.slotLimit = 12;
+    budget.cascades = 3;
+    const FrameContext frame = viewAcrossAField();
+    const Planned p = plan(frame, {directional(0, {1, 0.2, 0.5}), directional(1, {0, -1, 1})}, budget);
+    EXPECT_EQ(p.plan.slots, (std::vector<int>{0, 1}));
+    ASSERT_EQ(p.plan.frusta[0].size(), 3u);
+    ASSERT_EQ(p.plan.frusta[1].size(), 3u);
+    EXPECT_EQ(p.plan.firstFaceSlot[0], 2u);
+    EXPECT_EQ(p.plan.firstFaceSlot[1], 4u);
+    EXPECT_EQ(p.plan.slotsInUse, 6u);
+    EXPECT_TRUE(p.warnings.empty());
+    double lo = 1e300, hi = 0.0;
+    for (const osg::Vec3d& q : frame.region)
+        lo = std::min(lo, -(q * frame.view.view).z()), hi = std::max(hi, -(q * frame.view.view).z());
+    const std::vector<double> splits = oss::cascadeSplits(lo, hi, 3);
+    const std::vector<oss::LightFrustum>& c = p.plan.frusta[0];
+    EXPECT_EQ(c[0].viewDepthFrom, 0.0);
+    EXPECT_EQ(c[2].viewDepthTo, std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+        EXPECT_TRUE(c[k].valid && c[k].partial());
+        EXPECT_EQ(c[k].viewDepthFrom, k > 0 ? splits[k] : 0.0);
+        EXPECT_EQ(c[k].viewDepthTo, k < 2 ? splits[k + 1] : std::numeric_limits<double>::infinity());
+        const osg::Matrixd slice = oss::withDepthRange(frame.view.projection, splits[k], splits[k + 1]);
+        for (const osg::Vec3d& q : oss::visibleRegion(oss::frustumCorners(frame.view.view, slice), frame.receivers))
+        {
+            const osg::Vec3d t = q * c[k].worldToTexture();
+            for (int i = 0; i < 3; ++i) EXPECT_TRUE(t[i] >= 0.0 && t[i] <= 1.0) << "cascade " << k << " axis " << i;
+        }
+        if (k < 2)
+        {
+            EXPECT_GT(c[k].projection(0, 0), c[k + 1].projection(0, 0)); // smaller texels
+        }
+    }
+}
+
+TEST(LightPlanning, CascadesThatDoNotFitGiveOneMapAndAWarning)
+{
+    SlotBudget budget;
+    budget.slotLimit = 2;
+    budget.cascades = 3;
+    const Planned p = plan(viewAcrossAField(), {directional(0, {1, 0.2, 0.5})}, budget);
+    ASSERT_EQ(p.plan.frusta[0].size(), 1u);
+    EXPECT_FALSE(p.plan.frusta[0][0].partial());
+    EXPECT_EQ(p.plan.slotsInUse, 1u);
+    EXPECT_EQ(p.warned(oss::detail::WARN_CASCADE_SLOTS), 1);
+}
+
+TEST(LightPlanning, CascadesAreDirectionalLightsOnly)
+{
+    // A spot light keeps its one perspective map; a frame without a view (no depths to split)
+    // gives the directional light one map.
+    SlotBudget budget;
+    budget.slotLimit = 12;
+    budget.cascades = 4;
+    FrameContext frame = viewAcrossAField();
+    const Planned spotLit = plan(frame, {spot(0, {0, 0, 30}, {0, 0, -1}, 60.0)}, budget);
+    ASSERT_EQ(spotLit.plan.frusta[0].size(), 1u);
+    EXPECT_TRUE(spotLit.plan.frusta[0][0].perspective);
+    frame.view.valid = false;
+    const Planned viewless = plan(frame, {directional(0, {1, 0.2, 0.5})}, budget);
+    ASSERT_EQ(viewless.plan.frusta[0].size(), 1u);
+    EXPECT_FALSE(viewless.plan.frusta[0][0].partial());
 }

@@ -162,3 +162,25 @@ TEST(WarpedFrustum, NonFiniteEyeKeepsTheUniformMap)
         EXPECT_FALSE(f.projection.isNaN());
     }
 }
+
+TEST(CascadeSplits, MixTheLogarithmicAndTheUniformSplits)
+{
+    // [1, 1000] in three: logarithmic 1, 10, 100, 1000; uniform 1, 334, 667, 1000.
+    const std::vector<double> log = cascadeSplits(1.0, 1000.0, 3, 1.0);
+    const std::vector<double> uniform = cascadeSplits(1.0, 1000.0, 3, 0.0);
+    const std::vector<double> mixed = cascadeSplits(1.0, 1000.0, 3, 0.9);
+    ASSERT_EQ(log.size(), 4u);
+    for (int i = 0; i < 4; ++i)
+    {
+        EXPECT_NEAR(log[i], std::pow(10.0, i), 1e-9);
+        EXPECT_NEAR(uniform[i], 1.0 + 333.0 * i, 1e-9);
+        EXPECT_NEAR(mixed[i], 0.9 * log[i] + 0.1 * uniform[i], 1e-9);
+    }
+    // A near plane millimetres away counts as zFar / 1000 inside; the ends stay.
+    const std::vector<double> eyeHeight = cascadeSplits(1e-4, 1000.0, 3, 1.0);
+    EXPECT_EQ(eyeHeight.front(), 1e-4);
+    EXPECT_NEAR(eyeHeight[1], 10.0, 1e-9);
+    EXPECT_NEAR(eyeHeight[2], 100.0, 1e-9);
+    EXPECT_EQ(eyeHeight.back(), 1000.0);
+    EXPECT_EQ(cascadeSplits(2.0, 8.0, 1), (std::vector<double>{2.0, 8.0}));
+}

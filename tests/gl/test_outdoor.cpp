@@ -150,18 +150,20 @@ TEST(OutdoorScene, ShadowVolumeIsExact)
 }
 
 /** The near band's (0-20 m) and the whole view's wrong pixels of a mode, warped or not. */
-std::pair<int, int> nearAndAllWrong(const std::string& mode, bool warp, double& wrongPct)
+std::pair<int, int> nearAndAllWrong(const std::string& mode, bool warp, double& wrongPct, unsigned int cascades = 1)
 {
     osstest::ShadowedRender r("outdoor", mode, 2048, 512, 384);
     if (!r.valid()) return {-1, -1};
     r.technique->setPerspectiveWarp(warp);
+    r.technique->setCascades(cascades);
     const ossref::Mask mask = r.mask();
     const ossref::Mask reference = r.reference();
     const std::vector<ossref::BandScore> bands = ossref::compareMasksByDistance(mask, reference, {20.0, 200.0});
     const ossref::Comparison c = ossref::compareMasks(mask, reference);
     wrongPct = c.wrongPct;
-    std::cout << "outdoor " << mode << " warp " << (warp ? "on" : "off") << ": wrong_pct=" << c.wrongPct
-              << " near_wrong_pixels=" << bands[0].wrongPixels << " of " << bands[0].geometryPixels << std::endl;
+    std::cout << "outdoor " << mode << " warp " << (warp ? "on" : "off") << " cascades " << cascades
+              << ": wrong_pct=" << c.wrongPct << " near_wrong_pixels=" << bands[0].wrongPixels << " of "
+              << bands[0].geometryPixels << std::endl;
     return {bands[0].wrongPixels, c.wrongPixels};
 }
 
@@ -195,6 +197,30 @@ TEST(OutdoorScene, PerspectiveWarpElsewhereWarnsAndKeepsUniformMaps)
     EXPECT_EQ(r.mask().value, uniform.value);
     EXPECT_EQ(capture.count("PerspectiveWarp applies to SHADOW_MAP and SILHOUETTE_MAP"), 1) << capture.warnings();
     EXPECT_TRUE(capture.warned("mode hybrid with Filter")) << capture.warnings();
+}
+
+// Cascades (docs/outdoor.md): three maps, each for a range of the view's depths. Measured at
+// 512 x 384, map 2048, wrong pixels near / in all: SHADOW_MAP 3624 / 8214 with one map, 112 /
+// 334 with three, 69 / 208 with three warped; SILHOUETTE_MAP 520 / 1256, 6 / 59, 6 / 30;
+// HYBRID 0.0014% and 0.0007% of the view.
+TEST(OutdoorScene, CascadesSharpenEveryBand)
+{
+    for (const std::string mode : {"shadowmap", "silhouette", "hybrid"})
+    {
+        double pctOne = 0.0, pctThree = 0.0, pctWarped = 0.0;
+        const auto one = nearAndAllWrong(mode, false, pctOne, 1);
+        const auto three = nearAndAllWrong(mode, false, pctThree, 3);
+        ASSERT_GE(one.first, 0);
+        if (mode == "hybrid")
+        {
+            EXPECT_LE(pctThree, osstest::bounds::CLAIMED.hybrid);
+            continue;
+        }
+        const auto warped = nearAndAllWrong(mode, true, pctWarped, 3);
+        EXPECT_LE(three.first * 10, one.first) << mode;
+        EXPECT_LE(three.second * 8, one.second) << mode;
+        EXPECT_LE(warped.second * 8, one.second) << mode;
+    }
 }
 
 } // namespace
