@@ -5,6 +5,7 @@
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osgShadow/LightSpacePerspectiveShadowMap>
+#include <osgShadow/ParallelSplitShadowMap>
 #include <osgShadow/ShadowMap>
 #include <osgShadow/ShadowedScene>
 #include <osgShadow/SoftShadowMap>
@@ -18,12 +19,19 @@ namespace {
 
 const osg::Vec2 AMBIENT_BIAS(0.0f, 1.0f);
 
+/** PSSM's shadow-casting polygon offset (factor, units): LiSPSM's and VDSM's own, which PSSM
+ *  lacks (it has none by default and biases only by a constant depth in its shader). */
+const osg::Vec2 PSSM_POLYGON_OFFSET(1.1f, 4.0f);
+
 /** Unshadowed luminance at or below this (of 255) counts as black. */
 const double BLACK_LUMINANCE = 1.0;
 
+/** The largest map size handed to a peer. */
+const unsigned int MAX_MAP_SIZE = 16384;
+
 osg::Vec2s squareSize(unsigned int mapSize)
 {
-    const short n = static_cast<short>(std::min(mapSize, 16384u));
+    const short n = static_cast<short>(std::min(mapSize, MAX_MAP_SIZE));
     return osg::Vec2s(n, n);
 }
 
@@ -61,6 +69,20 @@ osg::Light* measuredLight(const PreparedScene& scene)
     return scene.lights.empty() ? nullptr : scene.lights.front().source->getLight();
 }
 
+/** PSSM's user light: a copy of `light` whose direction is the world direction the light
+ *  shines in (PSSM reads getDirection() as such and shadows directional light only); a light
+ *  with a position shines from there toward `target`. */
+osg::ref_ptr<osg::Light> pssmLight(const osg::Light& light, const osg::Matrixd& localToWorld, const osg::Vec3d& target)
+{
+    const osg::Vec4d p = osg::Vec4d(light.getPosition()) * localToWorld;
+    osg::Vec3d direction =
+        p.w() == 0.0 ? -osg::Vec3d(p.x(), p.y(), p.z()) : target - osg::Vec3d(p.x(), p.y(), p.z()) / p.w();
+    direction.normalize();
+    osg::ref_ptr<osg::Light> user = new osg::Light(light);
+    user->setDirection(osg::Vec3(direction));
+    return user;
+}
+
 } // namespace
 
 osg::Vec4 peerBackground()
@@ -71,7 +93,7 @@ osg::Vec4 peerBackground()
 std::vector<std::string> peerModes()
 {
     return {"osgShadow:ShadowMap", "osgShadow:SoftShadowMap", "osgShadow:LightSpacePerspectiveShadowMapCB",
-            "osgShadow:ViewDependentShadowMap"};
+            "osgShadow:ViewDependentShadowMap", "osgShadow:ParallelSplitShadowMap"};
 }
 
 bool isPeerMode(const std::string& mode)
@@ -102,8 +124,19 @@ osg::ref_ptr<osgShadow::ShadowTechnique> createPeerTechnique(const std::string& 
         return lispsm;
     }
     if (name == "ViewDependentShadowMap") return new osgShadow::ViewDependentShadowMap;
-    error = "unknown osgShadow technique '" + mode + "' (known: ShadowMap, SoftShadowMap, "
-            "LightSpacePerspectiveShadowMapCB, ViewDependentShadowMap)";
+    if (name == "ParallelSplitShadowMap")
+    {
+        osg::ref_ptr<osgShadow::ParallelSplitShadowMap> pssm = new osgShadow::ParallelSplitShadowMap;
+        pssm->setTextureResolution(std::min(mapSize, MAX_MAP_SIZE));
+        // Its default (0.1, 0.3) shades a shadow at 77% of the unshadowed frame: classified lit.
+        pssm->setAmbientBias(AMBIENT_BIAS);
+        pssm->setPolygonOffset(PSSM_POLYGON_OFFSET);
+        if (light) pssm->setUserLight(pssmLight(*light, osg::Matrixd::identity(), osg::Vec3d()).get());
+        return pssm;
+    }
+    error = "unknown osgShadow technique '" + mode +
+            "' (known: ShadowMap, SoftShadowMap, LightSpacePerspectiveShadowMapCB, ViewDependentShadowMap, "
+            "ParallelSplitShadowMap)";
     return nullptr;
 }
 
@@ -143,6 +176,13 @@ bool makePeerRoot(const std::string& mode, unsigned int mapSize, PreparedScene& 
     osg::ref_ptr<osgShadow::ShadowTechnique> technique =
         createPeerTechnique(mode, mapSize, measuredLight(scene), *ss->getShadowSettings(), error);
     if (!technique) return false;
+    // PSSM takes its user light's direction as given in world coordinates.
+    auto* pssm = dynamic_cast<osgShadow::ParallelSplitShadowMap*>(technique.get());
+    if (pssm && !scene.lights.empty())
+    {
+        const osg::Vec3d target = scene.content->getBound().center();
+        pssm->setUserLight(pssmLight(*measuredLight(scene), scene.lights.front().localToWorld, target).get());
+    }
     ss->setShadowTechnique(technique.get());
     ss->addChild(scene.content.get());
     ss->setStateSet(measurementStateSet(scene).get());

@@ -29,15 +29,17 @@ extern const char* const PEER_PREFIX;
 osg::Vec4 peerBackground();
 
 /** "osgShadow:ShadowMap", "osgShadow:SoftShadowMap", "osgShadow:LightSpacePerspectiveShadowMapCB",
- *  "osgShadow:ViewDependentShadowMap". */
+ *  "osgShadow:ViewDependentShadowMap", "osgShadow:ParallelSplitShadowMap". */
 std::vector<std::string> peerModes();
 
 /** Whether mode names a peer (starts with "osgShadow:"). */
 bool isPeerMode(const std::string& mode);
 
-/** The peer technique of `mode` with a mapSize x mapSize map, ambient bias (0, 1) where it has
- *  one, shadowing `light` (when not null); settings receives the texture size and the light
- *  number (VDSM reads them there). Null with a message for an unknown peer. */
+/** The peer technique of `mode` with a mapSize x mapSize map (PSSM: each of its 3 splits),
+ *  ambient bias (0, 1) where it has one, shadowing `light` (when not null; PSSM's user light,
+ *  its position taken in world coordinates, which makePeerRoot() makes exact); settings
+ *  receives the texture size and the light number (VDSM reads them there). Null with a
+ *  message for an unknown peer. */
 osg::ref_ptr<osgShadow::ShadowTechnique> createPeerTechnique(const std::string& mode, unsigned int mapSize, osg::Light* light,
                                                              osgShadow::ShadowSettings& settings, std::string& error);
 
@@ -49,7 +51,8 @@ void applyMeasurementLight(PreparedScene& scene);
 osg::ref_ptr<osg::StateSet> measurementStateSet(const PreparedScene& scene);
 
 /** The peer's root: a ShadowedScene with the technique over the content, carrying the
- *  measurement state; applies the measurement light. False with a message for an unknown peer. */
+ *  measurement state; applies the measurement light (PSSM's user light shines in the world
+ *  direction of the scene's first light). False with a message for an unknown peer. */
 bool makePeerRoot(const std::string& mode, unsigned int mapSize, PreparedScene& scene, osg::ref_ptr<osg::Node>& root,
                   std::string& error);
 

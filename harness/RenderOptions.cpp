@@ -293,7 +293,8 @@ std::string renderOptionsUsage(const std::string& program)
     for (const std::string& name : sceneNames()) scenes += (scenes.empty() ? "" : "|") + name;
     s << program << " [FILE] [--scene " << scenes << "]\n"
       << "    [--mode shadowmap|silhouette|hybrid|volume|none|osgShadow:ShadowMap|osgShadow:SoftShadowMap|\n"
-      << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap]\n"
+      << "            osgShadow:LightSpacePerspectiveShadowMapCB|osgShadow:ViewDependentShadowMap|\n"
+      << "            osgShadow:ParallelSplitShadowMap]\n"
       << "    [--map-size N] [--size W H] [--eye X Y Z] [--center X Y Z] [--up X Y Z] [--fovy DEG]\n"
       << "    [--light-dir X Y Z | --light-pos X Y Z [--spot-dir X Y Z] [--spot-cutoff DEG]]...\n"
       << "    [--frames N] [--warmup N]\n"

@@ -37,7 +37,7 @@ for ((k = 1; k <= RUNS; ++k)); do
   done
 done
 scripts/with-display.sh "$BUILD_DIR/bin/osgsilhouette-bench" --scenes default,poles,spheres \
-  --techniques silhouette,osgShadow:ShadowMap,osgShadow:SoftShadowMap,osgShadow:LightSpacePerspectiveShadowMapCB,osgShadow:ViewDependentShadowMap \
+  --techniques silhouette,osgShadow:ShadowMap,osgShadow:SoftShadowMap,osgShadow:LightSpacePerspectiveShadowMapCB,osgShadow:ViewDependentShadowMap,osgShadow:ParallelSplitShadowMap \
   --sizes 1024,4096 --frames 20 --warmup 3 --out-dir "$TMP/peers" --no-plot >/dev/null
 
 # Columns after the run number: scene, technique, map_size, ..., frame_ms_median (8), ..., wrong_pct (12).

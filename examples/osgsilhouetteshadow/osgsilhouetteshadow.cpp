@@ -21,7 +21,7 @@
  * (20-200), wrong_pct_far= (beyond; scene units, docs/outdoor.md).
  *
  * --mode osgShadow:ShadowMap|osgShadow:SoftShadowMap|osgShadow:LightSpacePerspectiveShadowMapCB|
- * osgShadow:ViewDependentShadowMap renders osgShadow's technique in the measurement setup of
+ * osgShadow:ViewDependentShadowMap|osgShadow:ParallelSplitShadowMap renders osgShadow's technique in the measurement setup of
  * MEASURE.md (harness/Peers.h); its mask (first light only) is classified from its image. */
 
 #include "AnimatedScenes.h"

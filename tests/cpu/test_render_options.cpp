@@ -1,5 +1,6 @@
 // The renderer's command line (MEASURE.md) refuses what it cannot honour: unknown options,
 // values that do not parse, options at the end without their value, a second file name.
+#include "Peers.h"
 #include "RenderOptions.h"
 
 #include <osgShadowSilhouette/Properties>
@@ -147,4 +148,11 @@ TEST(RenderOptions, UsageListsEveryBuiltInScene)
     const std::string usage = osshar::renderOptionsUsage("osgsilhouetteshadow");
     for (const std::string& scene : osshar::sceneNames())
         EXPECT_NE(usage.find(scene), std::string::npos) << "--help does not list scene " << scene;
+}
+
+TEST(RenderOptions, UsageListsEveryPeer)
+{
+    const std::string usage = osshar::renderOptionsUsage("osgsilhouetteshadow");
+    for (const std::string& peer : osshar::peerModes())
+        EXPECT_NE(usage.find(peer), std::string::npos) << "--help does not list peer " << peer;
 }

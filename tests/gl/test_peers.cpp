@@ -5,6 +5,7 @@
 #include "Setup.h"
 
 #include <gtest/gtest.h>
+#include <osgShadow/ParallelSplitShadowMap>
 
 #include <cstring>
 #include <memory>
@@ -71,7 +72,7 @@ double peerWrongPct(const std::string& mode, unsigned int mapSize)
 
 TEST(PeerModes, NamesAndTechniques)
 {
-    EXPECT_EQ(osshar::peerModes().size(), 4u);
+    EXPECT_EQ(osshar::peerModes().size(), 5u);
     for (const std::string& m : osshar::peerModes())
     {
         EXPECT_TRUE(osshar::isPeerMode(m)) << m;
@@ -85,6 +86,31 @@ TEST(PeerModes, NamesAndTechniques)
     EXPECT_FALSE(osshar::createPeerTechnique("osgShadow:NoSuchMap", 512, nullptr, *settings, error));
     EXPECT_FALSE(error.empty());
     EXPECT_FALSE(osshar::isPeerMode("shadowmap"));
+}
+
+// PSSM in the measurement setup: its splits at the map size, a shadow that darkens to black
+// (its default ambient bias (0.1, 0.3) shades a shadow at 77% of the unshadowed frame, which
+// classifies as lit), and a user light shining in the direction the light comes from (PSSM reads the
+// light's direction, not its position).
+TEST(PeerModes, ParallelSplitShadowMapIsConfiguredForTheMeasurement)
+{
+    osg::ref_ptr<osg::Light> light = new osg::Light;
+    light->setPosition(osg::Vec4(0.0f, 3.0f, 4.0f, 0.0f));
+    osg::ref_ptr<osgShadow::ShadowSettings> settings = new osgShadow::ShadowSettings;
+    std::string error;
+    osg::ref_ptr<osgShadow::ShadowTechnique> t =
+        osshar::createPeerTechnique("osgShadow:ParallelSplitShadowMap", 1024, light.get(), *settings, error);
+    auto* pssm = dynamic_cast<osgShadow::ParallelSplitShadowMap*>(t.get());
+    ASSERT_TRUE(pssm) << error;
+    EXPECT_EQ(pssm->getTextureResolution(), 1024u);
+    EXPECT_EQ(pssm->getAmbientBias(), osg::Vec2(0.0f, 1.0f));
+    EXPECT_GT(pssm->getPolygonOffset().x(), 0.0f);
+    ASSERT_TRUE(pssm->getUserLight());
+    EXPECT_NE(pssm->getUserLight(), light.get()) << "the scene's light keeps its own direction";
+    const osg::Vec3 d = pssm->getUserLight()->getDirection();
+    EXPECT_NEAR(d.x(), 0.0f, 1e-6f);
+    EXPECT_NEAR(d.y(), -0.6f, 1e-6f);
+    EXPECT_NEAR(d.z(), -0.8f, 1e-6f);
 }
 
 namespace {
