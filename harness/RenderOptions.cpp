@@ -270,6 +270,7 @@ bool parseRenderOptions(osg::ArgumentParser& a, RenderOptions& o, std::string& e
     if (a.read("--ground")) o.ground = true;
     if (a.read("--check-gl-errors")) o.checkGLErrors = true;
     if (a.read("--moving-light")) o.movingLight = true;
+    if (a.read("--rotating-light", o.lightTurnDeg)) o.movingLight = true;
     if (a.read("--animate")) o.animate = true;
     if (a.read("--score-every-frame")) o.scoreEveryFrame = true;
     a.read("--camera-path", o.cameraPath);
@@ -311,7 +312,8 @@ std::string renderOptionsUsage(const std::string& program)
         s << " [" << option << " "
           << osgShadowSilhouette::propertyValueSyntax(*osgShadowSilhouette::findProperty(property)) << "]";
     s << "\n"
-      << "    [--moving-light] [--animate] [--time-step S] [--camera-path FILE] [--score-every-frame] [--ground]\n"
+      << "    [--moving-light | --rotating-light DEG] [--animate] [--time-step S] [--camera-path FILE] "
+         "[--score-every-frame] [--ground]\n"
       << "    [--check-gl-errors]\n";
     return s.str();
 }

@@ -84,6 +84,7 @@ struct RenderOptions
      *  shorthands of propertyOptions() (--max-shadow-lights N, --hybrid-method lists, ...). */
     std::vector<std::pair<std::string, double>> properties;
     bool movingLight = false;         ///< --moving-light: light 0 turns by +-0.1 degree every frame (no map is reused)
+    double lightTurnDeg = 0.0;        ///< --rotating-light DEG: light 0 turns on by DEG degrees every frame
     /** --animate: plays every animation of the scene's osgAnimation::BasicAnimationManagers,
      *  looping (playAnimations()), and renders frame k (warm-up frames first, from 0) at
      *  simulation time k * timeStep; the frames after them (masks, images) show the last. */

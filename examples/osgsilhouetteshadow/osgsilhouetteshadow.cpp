@@ -390,7 +390,8 @@ int main(int argc, char** argv)
     renderer.setSceneData(root.get());
     renderer.setView(scene.view);
     // --moving-light: light 0 turns by +-0.1 degree about the vertical every frame, so that
-    // no light-space pass can be reused (the cost of a frame in which the light moves).
+    // no light-space pass can be reused (the cost of a frame in which the light moves);
+    // --rotating-light DEG: it turns on by DEG degrees every frame (a slow sun, for flicker).
     osg::Light* moving = options.movingLight && !scene.lights.empty() ? scene.lights[0].source->getLight() : nullptr;
     const osg::Vec4 rest = moving ? moving->getPosition() : osg::Vec4();
     if (options.animate)
@@ -415,7 +416,8 @@ int main(int argc, char** argv)
             refCamera = osshar::referenceCamera(scene.view, options.width, options.height);
         }
         if (!moving) return;
-        const double angle = osg::DegreesToRadians(frame % 2 ? 0.1 : -0.1);
+        const double angle = osg::DegreesToRadians(options.lightTurnDeg != 0.0 ? frame * options.lightTurnDeg
+                                                                               : (frame % 2 ? 0.1 : -0.1));
         moving->setPosition(rest * osg::Matrix::rotate(angle, osg::Vec3(0.0f, 0.0f, 1.0f)));
     };
     const auto afterFrame = [&](int frame) {

@@ -85,6 +85,13 @@ TEST(RenderOptions, CameraPathParses)
     EXPECT_TRUE(p.options.scoreEveryFrame);
     EXPECT_TRUE(parse({}).options.cameraPath.empty());
     EXPECT_NE(osshar::renderOptionsUsage("osgsilhouetteshadow").find("--camera-path FILE"), std::string::npos);
+    // A slow sun: light 0 turns on by the angle every frame.
+    const Parsed turning = parse({"--rotating-light", "0.05"});
+    ASSERT_TRUE(turning.ok) << turning.error;
+    EXPECT_NEAR(turning.options.lightTurnDeg, 0.05, 1e-7);
+    EXPECT_TRUE(turning.options.movingLight);
+    EXPECT_EQ(parse({"--moving-light"}).options.lightTurnDeg, 0.0);
+    EXPECT_NE(osshar::renderOptionsUsage("osgsilhouetteshadow").find("--rotating-light DEG"), std::string::npos);
 }
 
 // Every property of the technique can be set by --property NAME=VALUE, read by its table row,
@@ -124,6 +131,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadLine{"MapSizeNotANumber", {"--map-size", "abc"}, "--map-size"},
                       BadLine{"TrailingOptionWithoutValue", {"--mode", "volume", "--out"}, "--out"},
                       BadLine{"CameraPathWithoutFile", {"--camera-path"}, "--camera-path"},
+                      BadLine{"RotatingLightWithoutAngle", {"--rotating-light"}, "--rotating-light"},
                       BadLine{"ZeroFrames", {"--frames", "0"}, "--frames"},
                       BadLine{"TwoFiles", {"a.osgt", "b.osgt"}, "b.osgt"},
                       BadLine{"NegativeMapSize", {"--map-size", "-5"}, "--map-size -5 is out of range (1 to 16384"},
