@@ -104,9 +104,9 @@ std::vector<PropertyInfo> algorithmRows()
          "([docs/animation.md](docs/animation.md#volumes-extruded-on-the-gpu))"},
         {OSS_PROPERTY(PerspectiveWarp), P::BOOL, 0, 1, 0, 1, "", {},
          "warp directional lights' maps in perspective toward the eye (light space perspective shadow maps)",
-         "SHADOW_MAP and SILHOUETTE_MAP under `FILTER_PCF_2X2` and `FILTER_PCF`; the warp's axis, centre and "
-         "texels move in steps, so that shadows hold still while the eye moves; elsewhere one warning and "
-         "uniform maps ([docs/outdoor.md](docs/outdoor.md#the-perspective-warp-property-perspectivewarp))"},
+         "SHADOW_MAP and SILHOUETTE_MAP under `FILTER_PCF_2X2` and `FILTER_PCF`, HYBRID's classification map "
+         "and triangle lists under lights without a size; the warp's axis, centre and texels move in steps, so "
+         "that shadows hold still while the eye moves; elsewhere one warning and uniform maps ([docs/outdoor.md](docs/outdoor.md#the-perspective-warp-property-perspectivewarp))"},
         {OSS_PROPERTY(Cascades), P::UINT, 1, 3, 1, 4, "", {},
          "maps per directional light, each for a range of the view's depths (parallel split shadow maps)",
          "the splits mix the logarithmic and the uniform split (weight 0.9 on the logarithmic); each map "

@@ -202,8 +202,9 @@ void SilhouetteShadowTechnique::setCascades(unsigned int count)
 
 bool SilhouetteShadowTechnique::warpsMaps(Mode mode) const
 {
-    return _perspectiveWarp && (mode == SHADOW_MAP || mode == SILHOUETTE_MAP) &&
-           (_filter == FILTER_PCF_2X2 || _filter == FILTER_PCF);
+    if (!_perspectiveWarp) return false;
+    if (mode == HYBRID) return true; // but not under a light with a size (TechniqueCull)
+    return (mode == SHADOW_MAP || mode == SILHOUETTE_MAP) && (_filter == FILTER_PCF_2X2 || _filter == FILTER_PCF);
 }
 
 void SilhouetteShadowTechnique::setBlockerCulling(bool flag)

@@ -196,14 +196,18 @@ void TechniqueCull::planSlots()
     budget.mapSize = _t._shadowMapSize;
     budget.slotLimit = _t.slotCapacity(Technique::pairedSlots(_frame.mode));
     budget.cubeFaces = _frame.mode != Technique::SHADOW_VOLUME; // the volumes reach every direction
-    budget.warp = _t.warpsMaps(_frame.mode);
+    // HYBRID's rays toward a light with a size walk an orthographic map's texels.
+    budget.warp = _t.warpsMaps(_frame.mode) && !(_frame.mode == Technique::HYBRID && _frame.sizedLights);
     budget.cascades = budget.cubeFaces ? _t._cascades : 1;
     if (_t._perspectiveWarp && !budget.warp)
-        _t.warnOnce(WARN_WARP_MODE, std::string("PerspectiveWarp applies to SHADOW_MAP and SILHOUETTE_MAP under "
-                                                "FILTER_PCF_2X2 or FILTER_PCF; mode ") +
-                                        Technique::modeName(_frame.mode) + " with Filter " +
-                                        formatPropertyValue(*findProperty("Filter"), _t._filter) +
-                                        " keeps uniform maps");
+        _t.warnOnce(WARN_WARP_MODE,
+                    std::string("PerspectiveWarp applies to SHADOW_MAP and SILHOUETTE_MAP under FILTER_PCF_2X2 or "
+                                "FILTER_PCF, and to HYBRID under lights without a size; ") +
+                        (_frame.mode == Technique::HYBRID
+                             ? std::string("HYBRID under a light with a size")
+                             : "mode " + std::string(Technique::modeName(_frame.mode)) + " with Filter " +
+                                   formatPropertyValue(*findProperty("Filter"), _t._filter)) +
+                        " keeps uniform maps");
     const Technique::Filter filter = _t._filter;
     if (_frame.mode == Technique::SHADOW_MAP ||
         (_frame.mode == Technique::SILHOUETTE_MAP && filter == Technique::FILTER_SILHOUETTE))

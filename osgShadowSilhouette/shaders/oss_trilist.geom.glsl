@@ -148,9 +148,12 @@ void main()
     // A triangle reaching behind a perspective light's eye plane (a long caster beside a
     // point light, partly in a neighbouring cube face): its part beyond the near plane, where
     // the depth pass draws it and the rays are walked, as one or two triangles. Missing, the
-    // rays of its penumbrae (and the hard test at its edges) passed through it.
+    // rays of its penumbrae (and the hard test at its edges) passed through it. A directional
+    // light's map warped in perspective (PerspectiveWarp: w = 0 behind the map's near edge,
+    // along its y axis) keeps the part on the map's side of that edge (clip y + w = 0).
     oss_list[2] = 1u; // its depth pass may draw part of it
-    float d0 = c0.z + c0.w, d1 = c1.z + c1.w, d2 = c2.z + c2.w;
+    vec3 cut = oss_listPerspective ? vec3(c0.z, c1.z, c2.z) : vec3(c0.y, c1.y, c2.y);
+    float d0 = cut.x + c0.w, d1 = cut.y + c1.w, d2 = cut.z + c2.w;
     if (d0 <= 0.0 && d1 <= 0.0 && d2 <= 0.0)
         return; // wholly nearer than the near plane: outside the map
     // Rotated so that the vertices beyond the near plane come first: one (a) or two (a, b).

@@ -258,7 +258,9 @@ vec4 oss_listRayOrigin(vec4 eyePosition)
 // to the visible one are where rasterization and the exact reference may see different
 // ones (coincident faces, a part resting on another: docs/shadow-volumes.md, "The lists'
 // depth margin"). q is z for an orthographic light (its rate along the light: the length of
-// the matrix's z row) and -1/w for a perspective one (at most |w row| / w^2).
+// the matrix's z row), z / w for a directional light's map warped in perspective (w is
+// constant along the light, whose direction is across the x and y rows: the z row's part
+// along it over w) and -1/w for a perspective one (at most |w row| / w^2).
 const float OSS_LIST_MARGIN = 10.0;
 float oss_listMargin(int s, vec4 origin)
 {
@@ -266,8 +268,11 @@ float oss_listMargin(int s, vec4 origin)
     mat4 m = oss_eyeToShadow[s];
     vec4 wRow = vec4(m[0].w, m[1].w, m[2].w, m[3].w);
     float w = dot(wRow, origin);
+    vec3 zRow = vec3(m[0].z, m[1].z, m[2].z);
+    vec3 light = normalize(cross(vec3(m[0].x, m[1].x, m[2].x), vec3(m[0].y, m[1].y, m[2].y)));
     float perUnit = oss_listSlotPerspective[s] != 0 ? length(wRow.xyz) / (w * w)
-                                                   : length(vec3(m[0].z, m[1].z, m[2].z));
+                    : wRow.xyz == vec3(0.0)         ? length(zRow)
+                                                    : abs(dot(zRow, light)) / w;
     return OSS_LIST_MARGIN * world * perUnit;
 }
 
