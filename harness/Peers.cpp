@@ -69,19 +69,48 @@ osg::Light* measuredLight(const PreparedScene& scene)
     return scene.lights.empty() ? nullptr : scene.lights.front().source->getLight();
 }
 
-/** PSSM's user light: a copy of `light` whose direction is the world direction the light
- *  shines in (PSSM reads getDirection() as such and shadows directional light only); a light
- *  with a position shines from there toward `target`. */
-osg::ref_ptr<osg::Light> pssmLight(const osg::Light& light, const osg::Matrixd& localToWorld, const osg::Vec3d& target)
+/** The world direction `light` shines in, as PSSM reads a user light's getDirection() (it
+ *  shadows directional light only): a light with a position shines from there toward `target`. */
+osg::Vec3 pssmDirection(const osg::Light& light, const osg::Matrixd& localToWorld, const osg::Vec3d& target)
 {
     const osg::Vec4d p = osg::Vec4d(light.getPosition()) * localToWorld;
     osg::Vec3d direction =
         p.w() == 0.0 ? -osg::Vec3d(p.x(), p.y(), p.z()) : target - osg::Vec3d(p.x(), p.y(), p.z()) / p.w();
     direction.normalize();
+    return osg::Vec3(direction);
+}
+
+/** PSSM's user light: a copy of `light` shining in pssmDirection(). */
+osg::ref_ptr<osg::Light> pssmLight(const osg::Light& light, const osg::Matrixd& localToWorld, const osg::Vec3d& target)
+{
     osg::ref_ptr<osg::Light> user = new osg::Light(light);
-    user->setDirection(osg::Vec3(direction));
+    user->setDirection(pssmDirection(light, localToWorld, target));
     return user;
 }
+
+/** Keeps PSSM's user light (a copy) shining as the scene's light does, every frame: a light
+ *  the renderer moves (--moving-light, --rotating-light) moves PSSM's shadows too. */
+class PssmLightFollower : public osg::NodeCallback
+{
+public:
+    PssmLightFollower(const osg::Light* light, osg::Light* user, const osg::Matrixd& localToWorld,
+                      const osg::Vec3d& target)
+        : _light(light), _user(user), _localToWorld(localToWorld), _target(target)
+    {
+    }
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
+    {
+        osg::ref_ptr<const osg::Light> light;
+        if (_light.lock(light)) _user->setDirection(pssmDirection(*light, _localToWorld, _target));
+        traverse(node, nv);
+    }
+
+private:
+    osg::observer_ptr<const osg::Light> _light;
+    osg::ref_ptr<osg::Light> _user;
+    osg::Matrixd _localToWorld;
+    osg::Vec3d _target;
+};
 
 } // namespace
 
@@ -181,7 +210,10 @@ bool makePeerRoot(const std::string& mode, unsigned int mapSize, PreparedScene& 
     if (pssm && !scene.lights.empty())
     {
         const osg::Vec3d target = scene.content->getBound().center();
-        pssm->setUserLight(pssmLight(*measuredLight(scene), scene.lights.front().localToWorld, target).get());
+        const osg::Matrixd& localToWorld = scene.lights.front().localToWorld;
+        const osg::ref_ptr<osg::Light> user = pssmLight(*measuredLight(scene), localToWorld, target);
+        pssm->setUserLight(user.get());
+        ss->addUpdateCallback(new PssmLightFollower(measuredLight(scene), user.get(), localToWorld, target));
     }
     ss->setShadowTechnique(technique.get());
     ss->addChild(scene.content.get());

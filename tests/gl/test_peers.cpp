@@ -8,6 +8,7 @@
 #include <osgShadow/ParallelSplitShadowMap>
 
 #include <cstring>
+#include <iostream>
 #include <memory>
 
 namespace {
@@ -86,6 +87,23 @@ TEST(PeerModes, NamesAndTechniques)
     EXPECT_FALSE(osshar::createPeerTechnique("osgShadow:NoSuchMap", 512, nullptr, *settings, error));
     EXPECT_FALSE(error.empty());
     EXPECT_FALSE(osshar::isPeerMode("shadowmap"));
+}
+
+// PSSM's user light is a copy (it reads a direction, not a position): it follows the scene's
+// light every frame, so that a light the renderer turns (--rotating-light) turns PSSM's
+// shadows too. Measured on the default scene at map 2048: 0.019% wrong, 0.019% after the light
+// turned by 25 degrees; a copy that does not follow is 2.1% wrong there.
+TEST(PeerModes, ParallelSplitShadowMapFollowsAMovingLight)
+{
+    PeerRender r("default", "osgShadow:ParallelSplitShadowMap", 2048);
+    ASSERT_TRUE(r.valid());
+    const double before = r.compare().wrongPct;
+    osg::Light* light = r.scene.lights.front().source->getLight();
+    light->setPosition(light->getPosition() * osg::Matrix::rotate(osg::DegreesToRadians(25.0), osg::Vec3(0, 0, 1)));
+    const double after = r.compare().wrongPct;
+    std::cout << "pssm wrong_pct=" << before << " after the turn " << after << std::endl;
+    EXPECT_LT(before, 0.1);
+    EXPECT_LT(after, 0.1);
 }
 
 // PSSM in the measurement setup: its splits at the map size, a shadow that darkens to black
