@@ -187,7 +187,7 @@ TEST(PseudoLoader, AppliesTheOptionString)
         modelWithoutLight() + ".silhouette",
         "ShadowMapSize=1024 Mode=volume DebugView=mask DebugLight=0 LightNum=0 MaxShadowLights=2 "
         "BaseTextureUnit=6 PolygonOffsetFactor=2 PolygonOffsetUnits=8 UseDefaultShading=off ShadowRayOffset=3e-5 "
-        "PerPixelLighting=off SomeOtherPlugin=1");
+        "PerPixelLighting=off PerspectiveWarp=on Cascades=3 SomeOtherPlugin=1");
     Technique* t = techniqueOf(scene.get());
     ASSERT_NE(t, nullptr);
     EXPECT_EQ(t->getShadowMapSize(), 1024u);
@@ -201,6 +201,8 @@ TEST(PseudoLoader, AppliesTheOptionString)
     EXPECT_FALSE(t->getUseDefaultShading());
     EXPECT_FLOAT_EQ(t->getShadowRayOffset(), 3e-5f);
     EXPECT_FALSE(t->getPerPixelLighting());
+    EXPECT_TRUE(t->getPerspectiveWarp());
+    EXPECT_EQ(t->getCascades(), 3u);
 }
 
 TEST(PseudoLoader, WarnsAboutBadOptionsNamingThem)
