@@ -244,6 +244,35 @@ std::vector<osg::Vec3d> visibleRegion(const std::array<osg::Vec3d, 8>& c, const 
     return points;
 }
 
+namespace {
+
+/** The light-view ranges of the region (x, y, depth) and of the casters' box. */
+struct LightRanges
+{
+    Range rx, ry, rDepth, cx, cy, cDepth;
+    std::vector<osg::Vec3d> region; ///< the region's points in the light view
+};
+
+LightRanges lightRanges(const osg::Matrixd& view, const std::vector<osg::Vec3d>& region,
+                        const osg::BoundingBoxd& casters)
+{
+    LightRanges r;
+    for (const osg::Vec3d& p : region)
+    {
+        const osg::Vec3d q = p * view;
+        r.region.push_back(q);
+        r.rx.expand(q.x()), r.ry.expand(q.y()), r.rDepth.expand(-q.z());
+    }
+    for (const osg::Vec3d& p : boxCorners(casters))
+    {
+        const osg::Vec3d q = p * view;
+        r.cx.expand(q.x()), r.cy.expand(q.y()), r.cDepth.expand(-q.z());
+    }
+    return r;
+}
+
+} // namespace
+
 LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vector<osg::Vec3d>& region,
                                    const osg::BoundingBoxd& casters, unsigned int mapSize)
 {
@@ -254,19 +283,10 @@ LightFrustum fitDirectionalFrustum(const osg::Vec3d& towardLight, const std::vec
     // Orientation only for now; the origin is moved by whole texels once the extent is known.
     f.view = osg::Matrixd::lookAt(osg::Vec3d(), -d, orthogonal(d));
 
-    Range rx, ry, rDepth, cx, cy, cDepth;
-    for (const osg::Vec3d& p : region)
-    {
-        const osg::Vec3d q = p * f.view;
-        rx.expand(q.x()), ry.expand(q.y()), rDepth.expand(-q.z());
-    }
-    for (const osg::Vec3d& p : boxCorners(casters))
-    {
-        const osg::Vec3d q = p * f.view;
-        cx.expand(q.x()), cy.expand(q.y()), cDepth.expand(-q.z());
-    }
-    Range x{std::max(rx.lo, cx.lo), std::min(rx.hi, cx.hi)};
-    Range y{std::max(ry.lo, cy.lo), std::min(ry.hi, cy.hi)};
+    const LightRanges r = lightRanges(f.view, region, casters);
+    const Range &rDepth = r.rDepth, &cDepth = r.cDepth;
+    Range x{std::max(r.rx.lo, r.cx.lo), std::min(r.rx.hi, r.cx.hi)};
+    Range y{std::max(r.ry.lo, r.cy.lo), std::min(r.ry.hi, r.cy.hi)};
     if (x.empty() || y.empty() || cDepth.lo > rDepth.hi) return f;
 
     // Snap to whole texels of a map one texel larger than needed.
@@ -382,31 +402,6 @@ osg::Matrixd warpProjection(const Range& s, const Range& t, const Range& e)
     p(2, 2) = -1.0 / eh, p(1, 2) = -ec / eh;                        // z: (-z - ec y) / eh
     p(1, 3) = 1.0;                                                  // w: y
     return p;
-}
-
-/** The light-view ranges of the region (x, y, depth) and of the casters' box. */
-struct LightRanges
-{
-    Range rx, ry, rDepth, cx, cy, cDepth;
-    std::vector<osg::Vec3d> region; ///< the region's points in the light view
-};
-
-LightRanges lightRanges(const osg::Matrixd& view, const std::vector<osg::Vec3d>& region,
-                        const osg::BoundingBoxd& casters)
-{
-    LightRanges r;
-    for (const osg::Vec3d& p : region)
-    {
-        const osg::Vec3d q = p * view;
-        r.region.push_back(q);
-        r.rx.expand(q.x()), r.ry.expand(q.y()), r.rDepth.expand(-q.z());
-    }
-    for (const osg::Vec3d& p : boxCorners(casters))
-    {
-        const osg::Vec3d q = p * view;
-        r.cx.expand(q.x()), r.cy.expand(q.y()), r.cDepth.expand(-q.z());
-    }
-    return r;
 }
 
 /** The range of x / y over the box [x] x [y] (y > 0). */

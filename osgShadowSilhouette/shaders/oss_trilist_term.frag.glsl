@@ -251,6 +251,13 @@ vec4 oss_listRayOrigin(vec4 eyePosition)
     return vec4(p + n * offset, 1.0);
 }
 
+// The light's direction in eye space for a map warped in perspective: across the x and y rows
+// of eye -> texture matrix m (a light ray keeps its texel).
+vec3 oss_listWarpedLight(mat4 m)
+{
+    return normalize(cross(vec3(m[0].x, m[1].x, m[2].x), vec3(m[0].y, m[1].y, m[2].y)));
+}
+
 // How much nearer the light than the shadow ray's origin (eye space) a listed triangle must
 // lie to block the ray, in slot s's list depth q: a distance of OSS_LIST_MARGIN times the
 // map lookup's world bias there (1e-4 of the shadowed scene's radius plus 1e-4 per unit of
@@ -262,6 +269,7 @@ vec4 oss_listRayOrigin(vec4 eyePosition)
 // constant along the light, whose direction is across the x and y rows: the z row's part
 // along it over w) and -1/w for a perspective one (at most |w row| / w^2).
 const float OSS_LIST_MARGIN = 10.0;
+
 float oss_listMargin(int s, vec4 origin)
 {
     float world = oss_lookupBiasFrame.w + oss_lookupBiasPerDistance * length(origin.xyz - oss_lookupBiasFrame.xyz);
@@ -269,10 +277,9 @@ float oss_listMargin(int s, vec4 origin)
     vec4 wRow = vec4(m[0].w, m[1].w, m[2].w, m[3].w);
     float w = dot(wRow, origin);
     vec3 zRow = vec3(m[0].z, m[1].z, m[2].z);
-    vec3 light = normalize(cross(vec3(m[0].x, m[1].x, m[2].x), vec3(m[0].y, m[1].y, m[2].y)));
     float perUnit = oss_listSlotPerspective[s] != 0 ? length(wRow.xyz) / (w * w)
                     : wRow.xyz == vec3(0.0)         ? length(zRow)
-                                                    : abs(dot(zRow, light)) / w;
+                                                    : abs(dot(zRow, oss_listWarpedLight(m))) / w;
     return OSS_LIST_MARGIN * world * perUnit;
 }
 
