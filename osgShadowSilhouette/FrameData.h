@@ -80,6 +80,7 @@ struct ViewData : public osg::Referenced
     osg::ref_ptr<osg::Uniform> listLight, listLightSize, listSoftSamples, listEyeToPattern; ///< ... and soft shadows
     osg::ref_ptr<osg::Uniform> lookupBiasFrame; ///< the map lookups' depth bias (LOOKUP_BIAS_FRAME)
     std::vector<LightPass> passes;              ///< per shadow slot: the lights' own, then cube faces
+    std::vector<LightDescription> lastLights;   ///< the lights of this view's last cull (steadied())
     std::vector<bool> slotInUse;                ///< slots whose map this frame's receivers read
     std::vector<bool> slotSkipped;             ///< ... of those, cube faces the eye pass leaves out (nothing to shadow)
     osg::ref_ptr<StencilShadowPasses> stencil; ///< SHADOW_VOLUME and HYBRID eye passes

@@ -135,6 +135,29 @@ osg::Vec4d LightDescription::homogeneous() const
     return type == DIRECTIONAL ? osg::Vec4d(direction, 0.0) : osg::Vec4d(position, 1.0);
 }
 
+namespace {
+
+/** Whether a and b differ by rounding alone: by at most 1e-12 of the larger's length. */
+bool roundedAlike(const osg::Vec3d& a, const osg::Vec3d& b)
+{
+    return (a - b).length() <= 1e-12 * std::max(a.length(), b.length());
+}
+
+} // namespace
+
+LightDescription steadied(const LightDescription& fresh, const LightDescription& previous)
+{
+    if (fresh.lightNum != previous.lightNum || fresh.type != previous.type ||
+        fresh.spotCutoffDeg != previous.spotCutoffDeg || !roundedAlike(fresh.direction, previous.direction) ||
+        !roundedAlike(fresh.position, previous.position) || !roundedAlike(fresh.spotDirection, previous.spotDirection))
+        return fresh;
+    LightDescription d = fresh;
+    d.direction = previous.direction;
+    d.position = previous.position;
+    d.spotDirection = previous.spotDirection;
+    return d;
+}
+
 bool LightDescription::fromLight(const osg::Light& light, const osg::Matrixd& lightToWorld, LightDescription& out,
                                  std::string* refusal)
 {
@@ -330,12 +353,17 @@ double stepUp(double v)
     return std::exp2(std::ceil(16.0 * std::log2(v)) / 16.0);
 }
 
-/** The range of n texels, of a size in steps of 2^(1/16), on that size's grid, that holds r. */
+/** The range of n texels, of a size in steps of 2^(1/16), on that size's grid, that holds r,
+ *  as near centred on it as the grid allows: the spare texels lie on both sides, where a
+ *  later frame's need can slide into them (keepsWarpedFit()). */
 Range snapToTexels(Range r, double n)
 {
     const double texel =
         stepUp(std::max((r.hi - r.lo) / std::max(1.0, n - 1.0), 1e-12 * (std::fabs(r.lo) + std::fabs(r.hi)) + 1e-300));
-    r.lo = std::floor(r.lo / texel) * texel;
+    // lo on the grid within [r.hi - n texel, r.lo] (at least a texel wide), nearest the centred start.
+    const double first = std::ceil((r.hi - n * texel) / texel), last = std::floor(r.lo / texel);
+    const double centred = std::round((0.5 * (r.lo + r.hi) - 0.5 * n * texel) / texel);
+    r.lo = std::max(first, std::min(last, centred)) * texel;
     r.hi = r.lo + texel * n;
     return r;
 }
@@ -451,19 +479,37 @@ LightFrustum fitWarpedDirectionalFrustum(const osg::Vec3d& towardLight, const st
     LightFrustum f;
     if (s.empty() || r.cDepth.lo > r.rDepth.hi) return f;
     const double texels = std::max(1u, mapSize);
-    s = snapToTexels(s, texels);
-    const Range t = snapToTexels({1.0 / u.hi, 1.0 / u.lo}, texels);
+    const Range needT{1.0 / u.hi, 1.0 / u.lo};
+    const Range windowS = snapToTexels(s, texels), windowT = snapToTexels(needT, texels);
 
-    // The depth over u: from the casters nearest the light to the farthest receiver, anywhere
-    // along the axis the map covers.
-    const double zNear = r.cDepth.lo + centre.z(), zFar = r.rDepth.hi + centre.z();
+    // The depth over u: from the casters nearest the light to the farthest receiver (out to
+    // the depth grid), anywhere along the axis the map covers.
+    const double zNear = std::floor((r.cDepth.lo + centre.z()) / depthStep) * depthStep;
+    const double zFar = std::ceil((r.rDepth.hi + centre.z()) / depthStep) * depthStep;
     const double margin = 1e-3 * (zFar - zNear) + 1e-9 * (std::fabs(zNear) + std::fabs(zFar));
-    const Range e = ratioRange({zNear - margin, zFar + margin}, {1.0 / t.hi, 1.0 / t.lo});
+    const Range e = ratioRange({zNear - margin, zFar + margin}, {1.0 / windowT.hi, 1.0 / windowT.lo});
     f.view = rotation * osg::Matrixd::translate(-centre);
-    f.projection = warpProjection(s, t, e);
+    f.projection = warpProjection(windowS, windowT, e);
+    f.warpFit = {{s.lo, s.hi}, {needT.lo, needT.hi}, {zNear, zFar}, {windowS.lo, windowS.hi}, {windowT.lo, windowT.hi}};
     f.warped = true;
     f.valid = true;
     return f;
+}
+
+bool keepsWarpedFit(const LightFrustum& previous, const LightFrustum& fresh)
+{
+    if (!previous.valid || !fresh.valid || !previous.warped || !fresh.warped || previous.view != fresh.view)
+        return false;
+    const LightFrustum::WarpFit &p = previous.warpFit, &q = fresh.warpFit;
+    const auto holds = [](const osg::Vec2d& window, const osg::Vec2d& need) {
+        return window.x() <= need.x() && need.y() <= window.y();
+    };
+    // Texel sizes are steps of 2^(1/16): one step is a ratio of 1.044; two, 1.091.
+    const auto coarserByAStepAtMost = [](const osg::Vec2d& kept, const osg::Vec2d& fitted) {
+        return (kept.y() - kept.x()) <= 1.06 * (fitted.y() - fitted.x());
+    };
+    return holds(p.windowS, q.needS) && holds(p.windowT, q.needT) && holds(p.needZ, q.needZ) &&
+           coarserByAStepAtMost(p.windowS, q.windowS) && coarserByAStepAtMost(p.windowT, q.windowT);
 }
 
 std::vector<double> cascadeSplits(double zNear, double zFar, unsigned int count, double lambda)

@@ -170,6 +170,11 @@ void TechniqueCull::cullLights()
             _vd.receiverStateSet->removeMode(GL_LIGHT0 + num);
     }
     for (FoundLight& found : _lights)
+        for (const LightDescription& last : _vd.lastLights)
+            if (last.lightNum == found.description.lightNum) found.description = steadied(found.description, last);
+    _vd.lastLights.clear();
+    for (const FoundLight& found : _lights) _vd.lastLights.push_back(found.description);
+    for (FoundLight& found : _lights)
     {
         std::string refusal;
         found.description.size =
@@ -327,7 +332,13 @@ void TechniqueCull::cullSlot(const LightDescription& light, unsigned int slot, c
     LightPass& pass = _vd.passes[slot];
     fitDepthMap(pass, slot, _t._shadowMapSize, _mode->rawDepthMaps(_settings), *_t._shared->depthPassStateSet,
                 _t._shadowedScene);
+    // A warped map that still holds what this frame needs keeps its projection, and with it
+    // every pass drawn with it (the eye walking within a step of the warp).
+    const bool kept = keepsWarpedFit(pass.frustum, frustum);
+    const osg::Matrixd keptProjection = pass.frustum.projection;
+    const LightFrustum::WarpFit keptFit = pass.frustum.warpFit;
     pass.frustum = frustum;
+    if (kept) pass.frustum.projection = keptProjection, pass.frustum.warpFit = keptFit;
     if (!_mode->drawsMaps()) return; // volumes only, no map
     _vd.slotInUse[slot] = true;
     SlotCull cull{light, slot, pass, cullDepthMap(_mf, *_mode, pass, light), secondMap};

@@ -237,6 +237,58 @@ TEST(LightDescription, DirectionalRotatedByItsLightSource)
     EXPECT_EQ(d.homogeneous().w(), 0.0);
 }
 
+TEST(LightDescription, SteadiedAgainstTheLastFrameThroughAnotherView)
+{
+    // The technique finds a light as its position times the model-view matrix at its
+    // LightSource times the inverse of the view's: every eye gives another rounding of the
+    // same world light. steadied() against the last frame's description must not tell them
+    // apart (or every pass drawn for the light would be drawn again each frame the eye
+    // moves), and must follow a light that moves.
+    osg::ref_ptr<osg::Light> sun = new osg::Light(0);
+    sun->setPosition(osg::Vec4(0.7f, -0.2f, 0.3f, 0.0f));
+    osg::ref_ptr<osg::Light> lamp = new osg::Light(1);
+    lamp->setPosition(osg::Vec4(120.3f, -57.1f, 9.7f, 1.0f));
+    lamp->setDirection(osg::Vec3(0.1f, 0.2f, -1.0f));
+    lamp->setSpotCutoff(40.0f);
+    LightDescription first[2], last[2];
+    ASSERT_TRUE(LightDescription::fromLight(*sun, osg::Matrixd(), first[0]));
+    ASSERT_TRUE(LightDescription::fromLight(*lamp, osg::Matrixd(), first[1]));
+    last[0] = first[0], last[1] = first[1];
+    unsigned int roundingsDiffer = 0;
+    for (int k = 0; k < 40; ++k)
+    {
+        // A walk that turns: 5 cm and a tenth of a degree a frame.
+        const osg::Vec3d eye(-40.0 + 0.05 * k, -420.0 + 0.037 * k, 1.45 + 0.003 * k);
+        const double heading = osg::DegreesToRadians(44.0 + 0.1 * k);
+        const osg::Matrixd view =
+            osg::Matrixd::lookAt(eye, eye + osg::Vec3d(std::cos(heading), std::sin(heading), -0.06), {0, 0, 1});
+        const osg::Matrixd lightToWorld = view * osg::Matrixd::inverse(view);
+        LightDescription d[2];
+        ASSERT_TRUE(LightDescription::fromLight(*sun, lightToWorld, d[0]));
+        ASSERT_TRUE(LightDescription::fromLight(*lamp, lightToWorld, d[1]));
+        roundingsDiffer += d[0].direction != first[0].direction || d[1].position != first[1].position ? 1 : 0;
+        for (int i = 0; i < 2; ++i) last[i] = steadied(d[i], last[i]);
+        EXPECT_EQ(last[0].direction, first[0].direction) << k;
+        EXPECT_EQ(last[1].position, first[1].position) << k;
+        EXPECT_EQ(last[1].spotDirection, first[1].spotDirection) << k;
+    }
+    EXPECT_GT(roundingsDiffer, 10u); // the case is not vacuous: most products are not exact
+
+    // A light that moves, however little beyond rounding, is followed.
+    LightDescription moved = first[0];
+    moved.direction = osg::Vec3d(0.7, -0.2, 0.3 + 1e-9);
+    moved.direction.normalize();
+    EXPECT_EQ(steadied(moved, first[0]).direction, moved.direction);
+    moved = first[1];
+    moved.position += osg::Vec3d(0.0, 0.0, 1e-6);
+    EXPECT_EQ(steadied(moved, first[1]).position, moved.position);
+    moved = first[1];
+    moved.spotCutoffDeg = 41.0;
+    EXPECT_EQ(steadied(moved, first[1]).spotCutoffDeg, 41.0);
+    moved.lightNum = 3;
+    EXPECT_EQ(steadied(moved, first[1]).lightNum, 3);
+}
+
 TEST(LightDescription, PositionalDividesByWAndTranslates)
 {
     osg::ref_ptr<osg::Light> lightPtr = new osg::Light;

@@ -64,6 +64,23 @@ double fraction(double v)
     return v - std::floor(v);
 }
 
+/** Whether every point of @p e's region (and the top of the casters' box toward the sun
+ *  above it) lies inside @p f's map and depth range. */
+bool holdsRegion(const LightFrustum& f, const Eye& e)
+{
+    for (const osg::Vec3d& p : e.region)
+    {
+        const osg::Vec3d top = p + TOWARD_SUN * ((GROUND.zMax() - p.z()) / TOWARD_SUN.z());
+        for (const osg::Vec3d& q : {p, top})
+        {
+            const osg::Vec3d t = texture(f, q);
+            for (int i = 0; i < 3; ++i)
+                if (!(t[i] >= 0.0 && t[i] <= 1.0)) return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 TEST(WarpedFrustum, HoldsTheRegionAndWhatCanShadowIt)
@@ -131,6 +148,44 @@ TEST(WarpedFrustum, TexelGridHoldsStillWhileTheEyeMovesALittle)
     // A walk of 30 m moves the grid (the test above is not vacuous).
     const osg::Vec3d moved = texture(warped(eyeAt(10, -270, 20)), probe) * MAP;
     EXPECT_GT(std::hypot(fraction(moved.x()) - fraction(t0.x()), fraction(moved.y()) - fraction(t0.y())), 0.01);
+}
+
+TEST(WarpedFrustum, KeepsItsFitWhileTheEyeWalksWithinAStep)
+{
+    // The eye walks 5 cm a frame along its heading, turning 0.2 degrees: a frustum kept from an
+    // earlier frame (keepsWarpedFit()) holds every later frame's region, at most one texel
+    // step coarser, and is kept for most frames; a fresh fit takes over when it is not.
+    LightFrustum kept = warped(eyeAt(10, -300, 20));
+    ASSERT_TRUE(kept.valid && kept.warped);
+    unsigned int keptFrames = 0;
+    const unsigned int frames = 60;
+    for (unsigned int i = 1; i <= frames; ++i)
+    {
+        const double heading = 20.0 + 0.2 * i, walked = 0.05 * i;
+        const Eye e = eyeAt(10 + walked * std::sin(osg::DegreesToRadians(20.0)),
+                            -300 + walked * std::cos(osg::DegreesToRadians(20.0)), heading);
+        const LightFrustum fresh = warped(e);
+        ASSERT_TRUE(fresh.valid && fresh.warped);
+        ASSERT_TRUE(holdsRegion(fresh, e));
+        if (!keepsWarpedFit(kept, fresh))
+        {
+            kept = fresh;
+            continue;
+        }
+        ++keptFrames;
+        EXPECT_TRUE(holdsRegion(kept, e)) << "frame " << i;
+        const auto width = [](const osg::Vec2d& w) { return w.y() - w.x(); };
+        EXPECT_LE(width(kept.warpFit.windowS), 1.0443 * width(fresh.warpFit.windowS)) << "frame " << i;
+        EXPECT_LE(width(kept.warpFit.windowT), 1.0443 * width(fresh.warpFit.windowT)) << "frame " << i;
+    }
+    EXPECT_GE(keptFrames, frames / 2);
+
+    // Not kept: after a walk of 30 m (another centre), or turned by 20 degrees (another axis).
+    const LightFrustum start = warped(eyeAt(10, -300, 20));
+    EXPECT_FALSE(keepsWarpedFit(start, warped(eyeAt(10, -270, 20))));
+    EXPECT_FALSE(keepsWarpedFit(start, warped(eyeAt(10, -300, 40))));
+    EXPECT_TRUE(keepsWarpedFit(start, start));
+    EXPECT_FALSE(keepsWarpedFit(start, fitDirectionalFrustum(TOWARD_SUN, eyeAt(10, -300, 20).region, GROUND, MAP)));
 }
 
 TEST(WarpedFrustum, LookingAlongTheLightKeepsTheUniformMap)
