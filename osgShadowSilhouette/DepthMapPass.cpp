@@ -148,7 +148,8 @@ bool cullDepthMap(ModeFrame& mf, ModePass& mode, LightPass& pass, const LightDes
     inputs.view = pass.frustum.view;
     inputs.projection = pass.frustum.projection;
     inputs.light = light.homogeneous();
-    inputs.polygonOffsetFactor = mf.settings.polygonOffsetFactor;
+    inputs.polygonOffsetFactor =
+        pass.frustum.warped ? mf.settings.warpedPolygonOffsetFactor : mf.settings.polygonOffsetFactor;
     inputs.gpuExtraction = mf.settings.gpuExtraction;
     const bool reuse = inputs == pass.rendered && mode.keepsSlotPasses(pass, mf.settings);
     if (auto* scene = dynamic_cast<TraverseShadowedSceneCallback*>(pass.depthCamera->getCullCallback()))

@@ -39,6 +39,7 @@ struct PassSettings
     unsigned int shadowMapSize = 0;
     unsigned int glGeneration = 0;    ///< maps rendered under another generation hold nothing
     float polygonOffsetFactor = 0.0f; ///< the depth passes' offset for the mode rendered
+    float warpedPolygonOffsetFactor = 0.0f; ///< the same for a warped map (LightFrustum::warped)
     float polygonOffsetUnits = 0.0f;
     bool blockerCulling = true;
     bool hybridEdgeMask = true;

@@ -86,7 +86,8 @@ std::vector<PropertyInfo> algorithmRows()
          "negative means automatic", {},
          "slope-scaled depth bias of the depth pass (glPolygonOffset factor)",
          "negative: 0 in HYBRID (its lookup compares each depth sample with the receiver's plane and sends "
-         "the pixels the bias decides to the exact test), 1.1 otherwise; every lookup also subtracts a "
+         "the pixels the bias decides to the exact test), 2 for SHADOW_MAP's maps warped by `PerspectiveWarp`, "
+         "1.1 otherwise; every lookup also subtracts a "
          "world-space bias, a share of the scene's radius converted into the map's depth at the receiver "
          "([docs/bias.md](docs/bias.md))"},
         {OSS_PROPERTY(PolygonOffsetUnits), P::FLOAT, 4, 7.5, -INF, INF, "", {},

@@ -134,10 +134,11 @@ void SilhouetteShadowTechnique::setPolygonOffsetFactor(float factor)
     dirty();
 }
 
-float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode) const
+float SilhouetteShadowTechnique::getEffectivePolygonOffsetFactor(Mode mode, bool warpedMap) const
 {
     if (_polygonOffsetFactor >= 0.0f) return _polygonOffsetFactor;
-    return mode == HYBRID ? 0.0f : 1.1f;
+    if (mode == HYBRID) return 0.0f;
+    return mode == SHADOW_MAP && warpedMap ? 2.0f : 1.1f;
 }
 
 void SilhouetteShadowTechnique::setPolygonOffsetUnits(float units)

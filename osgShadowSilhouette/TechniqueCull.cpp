@@ -96,6 +96,7 @@ PassSettings TechniqueCull::passSettings() const
     s.shadowMapSize = _t._shadowMapSize;
     s.glGeneration = _t.getGLGeneration();
     s.polygonOffsetFactor = _t.getEffectivePolygonOffsetFactor(_frame.mode);
+    s.warpedPolygonOffsetFactor = _t.getEffectivePolygonOffsetFactor(_frame.mode, true);
     s.polygonOffsetUnits = _t._polygonOffsetUnits;
     s.blockerCulling = _t._blockerCulling;
     s.hybridEdgeMask = _t._hybridEdgeMask;

@@ -22,7 +22,7 @@ if [ -n "${QUICK:-}" ]; then WALK_FRAMES=10; fi
 MAP=${MAP:-2048}
 # mode:options, options a comma list of warp and cN (N cascades); a peer is osgShadow:NAME.
 CONFIGS=${CONFIGS:-"shadowmap: shadowmap:warp shadowmap:c3 shadowmap:warp,c3 silhouette: silhouette:warp silhouette:c3
-  silhouette:warp,c3 hybrid: hybrid:c3 osgShadow:LightSpacePerspectiveShadowMapCB: osgShadow:ViewDependentShadowMap:
+  silhouette:warp,c3 hybrid: hybrid:warp hybrid:c3 osgShadow:LightSpacePerspectiveShadowMapCB: osgShadow:ViewDependentShadowMap:
   osgShadow:ParallelSplitShadowMap:"}
 
 bench_setup osgsilhouetteshadow

@@ -208,12 +208,17 @@ TEST(PolygonOffsetFactor, AutomaticLeavesHybridsMapUnbiased)
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 0.0f); // plane tests in the lookup
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 1.1f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SILHOUETTE_MAP), 1.1f);
+    // A warped map (PerspectiveWarp): SHADOW_MAP's acne on surfaces the light grazes.
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP, true), 2.0f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SILHOUETTE_MAP, true), 1.1f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID, true), 0.0f);
     t->setHybridEdgeMask(false);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 0.0f);
     t->setHybridEdgeMask(true);
     t->setPolygonOffsetFactor(0.5f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::HYBRID), 0.5f);
     EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP), 0.5f);
+    EXPECT_FLOAT_EQ(t->getEffectivePolygonOffsetFactor(Technique::SHADOW_MAP, true), 0.5f);
     t->setPolygonOffsetFactor(-3.0f);
     EXPECT_EQ(t->getPolygonOffsetFactor(), Technique::AUTOMATIC_POLYGON_OFFSET_FACTOR);
     NotifyCapture capture;
