@@ -13,6 +13,7 @@
 #   scripts/bench-outdoor.sh                 # build (into $BUILD_DIR, default build-bench) and run
 #   QUICK=1 scripts/bench-outdoor.sh         # 5 frames, a 10-frame walk (a smoke test, not results)
 #   CONFIGS="silhouette:warp,c3" scripts/bench-outdoor.sh  # label:options pairs (see below)
+#   CSV_NAME=x.csv BLOCK=name ...            # another CSV under docs/bench and generated block
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/bench-rounds.sh
@@ -27,7 +28,7 @@ CONFIGS=${CONFIGS:-"shadowmap: shadowmap:warp shadowmap:c3 shadowmap:warp,c3 sil
 
 bench_setup osgsilhouetteshadow
 BIN="$BUILD_DIR/bin/osgsilhouetteshadow"
-CSV="$OUT/outdoor.csv"
+CSV="$OUT/${CSV_NAME:-outdoor.csv}"
 echo "technique,options,map_size,wrong_pct,near,mid,far,frame_ms_median,walk_wrong_pct_mean,walk_wrong_pct_max,walk_near,walk_mid,walk_far,flicker_pct,flicker_pct_max,walk_frame_ms_median" > "$CSV"
 COMMON=(--scene outdoor --map-size "$MAP" --size 1024 768 --offscreen)
 
@@ -72,5 +73,5 @@ TABLE="$TMP/table.md"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   tail -n +2 "$CSV" | awk -F, '{ printf "| %s | %s |", $1, $2; for (i = 4; i <= NF; ++i) printf " %s |", $i; print "" }'
 } > "$TABLE"
-replace_block docs/outdoor.md osgsilhouette-outdoor-bench "$TABLE"
+replace_block docs/outdoor.md "${BLOCK:-osgsilhouette-outdoor-bench}" "$TABLE"
 rm -rf "$TMP"
