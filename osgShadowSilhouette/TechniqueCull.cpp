@@ -335,11 +335,10 @@ void TechniqueCull::cullSlot(const LightDescription& light, unsigned int slot, c
                 _t._shadowedScene);
     // A warped map that still holds what this frame needs keeps its projection, and with it
     // every pass drawn with it (the eye walking within a step of the warp).
-    const bool kept = keepsWarpedFit(pass.frustum, frustum);
-    const osg::Matrixd keptProjection = pass.frustum.projection;
-    const LightFrustum::WarpFit keptFit = pass.frustum.warpFit;
-    pass.frustum = frustum;
-    if (kept) pass.frustum.projection = keptProjection, pass.frustum.warpFit = keptFit;
+    LightFrustum fitted = frustum;
+    if (keepsWarpedFit(pass.frustum, frustum))
+        fitted.projection = pass.frustum.projection, fitted.warpFit = pass.frustum.warpFit;
+    pass.frustum = fitted;
     if (!_mode->drawsMaps()) return; // volumes only, no map
     _vd.slotInUse[slot] = true;
     SlotCull cull{light, slot, pass, cullDepthMap(_mf, *_mode, pass, light), secondMap};
