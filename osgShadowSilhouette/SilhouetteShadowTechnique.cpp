@@ -459,7 +459,12 @@ void SilhouetteShadowTechnique::prepareFrame(osgUtil::CullVisitor& cv, detail::F
 void SilhouetteShadowTechnique::cullReceivers(osgUtil::CullVisitor& cv, detail::ViewData& vd, osg::StateSet* pass)
 {
     detail::cullReceivers(cv, *_shadowedScene, vd, pass, _shared ? _shared->casterStages.get() : nullptr,
-                          _listedDrawables.get());
+                          _listedDrawables.get(), readsEyeDepth());
+}
+
+bool SilhouetteShadowTechnique::readsEyeDepth() const
+{
+    return _mode == SHADOW_VOLUME || (_mode == HYBRID && _hybridMethod == HYBRID_STENCIL_VOLUMES);
 }
 
 detail::Warn SilhouetteShadowTechnique::warner() const

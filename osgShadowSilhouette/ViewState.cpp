@@ -164,13 +164,19 @@ void updateRayFrames(osgUtil::CullVisitor& cv, ViewData& vd, const osg::Bounding
 }
 
 void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
-                   CasterVertexStages* stages, ListedDrawables* faces)
+                   CasterVertexStages* stages, ListedDrawables* faces, bool tightNear)
 {
     const osgShadow::ShadowSettings* settings = scene.getShadowSettings();
     const unsigned int mask = cv.getTraversalMask();
     cv.setTraversalMask(mask & settings->getReceivesShadowTraversalMask());
     const osg::CullSettings::ComputeNearFarMode nearFar = cv.getComputeNearFarMode();
-    const osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
+    osg::CullSettings::ComputeNearFarMode nearFarOverride = settings->getComputeNearFarModeOverride();
+    // The stencil volumes compare their faces with the eye's depth buffer: a near plane the
+    // near-far ratio clamped (a ground around the eye gives far / 2000) leaves the buffer too
+    // coarse where shadow outlines fall (docs/shadow-volumes.md, "Precision").
+    if (tightNear && nearFarOverride == osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR &&
+        nearFar == osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES)
+        nearFarOverride = osg::CullSettings::COMPUTE_NEAR_USING_PRIMITIVES;
     if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.setComputeNearFarMode(nearFarOverride);
     cv.pushStateSet(vd.receiverStateSet.get());
     if (pass) cv.pushStateSet(pass);
@@ -183,7 +189,10 @@ void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, Vi
     // Quads and polygons split as the shadow geometry and the light passes split them.
     if (faces && bin && bin->getStage()) faces->splitFaces(*bin->getStage(), pass ? pass : vd.receiverStateSet.get());
     cv.popStateSet();
-    if (nearFarOverride != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
+    // The primitive modes leave their candidates to the end of the camera's cull: resolve
+    // them now, as ViewDependentShadowMap does, or the light passes that follow read an
+    // empty depth range and cast nothing.
+    if (cv.getComputeNearFarMode() != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR) cv.computeNearPlane();
     cv.setComputeNearFarMode(nearFar);
     cv.setTraversalMask(mask);
 }

@@ -61,9 +61,12 @@ void bindSecondMaps(ViewData& vd, const std::vector<osg::Texture2D*>& maps, osg:
 /** Culls @p scene's children for the eye under the receivers' traversal mask, inside the
  *  view's receiver state and @p pass (may be null); the ShadowSettings'
  *  ComputeNearFarModeOverride decides how the view computes its near and far planes over the
- *  receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits. */
+ *  receivers (as ViewDependentShadowMap), and so the range visibleReceiverRegion() fits.
+ *  Without an override, @p tightNear (the stencil modes) takes the near plane from the
+ *  receivers' primitives where the view computes it from bounding volumes. The primitive
+ *  modes' deferred drawables are resolved before it returns. */
 void cullReceivers(osgUtil::CullVisitor& cv, osgShadow::ShadowedScene& scene, ViewData& vd, osg::StateSet* pass,
-                   CasterVertexStages* stages = nullptr, ListedDrawables* faces = nullptr);
+                   CasterVertexStages* stages = nullptr, ListedDrawables* faces = nullptr, bool tightNear = false);
 
 /** Culls @p scene's children for the eye under the casters' traversal mask inside @p pass
  *  alone (the view's receiver state stays out), without view-frustum or small-feature

@@ -4,12 +4,20 @@
 // warning; the settings without a meaning here leave the picture alone and warn once.
 #include "GLTestSupport.h"
 #include "NotifyCapture.h"
+#include "Meshes.h"
+#include "cpu/test_soups.h"
+
+#include <osg/Geode>
+#include <osgDB/WriteFile>
 
 #include <osgShadow/ShadowSettings>
 #include <osgUtil/CullVisitor>
+#include <osgUtil/SceneView>
+#include <osgViewer/Renderer>
 
 #include <cfloat>
 #include <functional>
+#include <map>
 
 using osstest::NotifyCapture;
 using osstest::ShadowedRender;
@@ -219,6 +227,106 @@ TEST(ShadowSettingsGL, ComputeNearFarModeOverrideAppliesToTheReceivers)
         EXPECT_EQ(m, osg::CullSettings::COMPUTE_NEAR_FAR_USING_PRIMITIVES);
     EXPECT_EQ(camera->getComputeNearFarMode(), own);
     r.scene.content->removeCullCallback(record.get());
+}
+
+namespace {
+
+/** A ground wider than the view and one drawable of three boxes and a pole that rises past
+ *  the view's top, written where the renderer's options can load them: both drawables cross
+ *  the view's sides, as a framed model on a ground often does. */
+osshar::RenderOptions boxesOnAGround()
+{
+    std::vector<souptest::Triangle> boxes = souptest::box({-3, -1, 0}, {-1, 1, 3});
+    for (const souptest::Triangle& t : souptest::box({0, -2, 0}, {1, -1, 1})) boxes.push_back(t);
+    for (const souptest::Triangle& t : souptest::box({1, 1, 0}, {3, 2, 2})) boxes.push_back(t);
+    for (const souptest::Triangle& t : souptest::box({-0.2f, 2.8f, 0}, {0.2f, 3.2f, 40})) boxes.push_back(t);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(osshar::makeGround(0, 0, 200));
+    geode->addDrawable(souptest::soupGeometry(boxes, "boxes and a pole"));
+    osshar::RenderOptions o;
+    o.file = ::testing::TempDir() + "oss_boxes_on_a_ground.osgt";
+    EXPECT_TRUE(osgDB::writeNodeFile(*geode, o.file));
+    o.eye = osg::Vec3d(2, -14, 6), o.center = osg::Vec3d(0, 0, 0);
+    o.lights.push_back({true, osg::Vec3d(0.5, -0.6, 0.6)});
+    return o;
+}
+
+} // namespace
+
+// A camera that computes its near and far planes from primitives (COMPUTE_NEAR_FAR_USING_
+// PRIMITIVES, COMPUTE_NEAR_USING_PRIMITIVES) defers every drawable that crosses the view's
+// sides, here the ground, to the end of its cull; the technique resolves them before its
+// light passes read the view's depth range. Every mode then casts the shadows it casts under
+// bounding volumes: before, the range read empty and no light cast a shadow.
+TEST(ShadowSettingsGL, ThePrimitiveNearFarModesCastTheSameShadows)
+{
+    using NearFar = osg::CullSettings::ComputeNearFarMode;
+    const osshar::RenderOptions options = boxesOnAGround();
+    for (const char* mode : {"shadowmap", "silhouette", "hybrid", "volume"})
+    {
+        SCOPED_TRACE(mode);
+        std::map<NearFar, ossref::Comparison> scores;
+        for (const NearFar m :
+             {osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES,
+              osg::CullSettings::COMPUTE_NEAR_FAR_USING_PRIMITIVES, osg::CullSettings::COMPUTE_NEAR_USING_PRIMITIVES})
+        {
+            SCOPED_TRACE(int(m));
+            ShadowedRender r(options, mode, 1024, W, H); // the camera's mode from the first frame
+            ASSERT_TRUE(r.valid());
+            r.renderer->viewer().getCamera()->setComputeNearFarMode(m);
+            const ossref::Mask reference = r.reference();
+            ASSERT_GT(reference.count(ossref::MASK_NO_LIGHT), 500); // the boxes' shadows are in view
+            scores[m] = ossref::compareMasks(r.mask(), reference);
+        }
+        const double volumes = scores[osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES].wrongPct;
+        EXPECT_LT(volumes, 0.2);
+        EXPECT_LE(scores[osg::CullSettings::COMPUTE_NEAR_FAR_USING_PRIMITIVES].wrongPct, volumes + 0.02);
+        EXPECT_LE(scores[osg::CullSettings::COMPUTE_NEAR_USING_PRIMITIVES].wrongPct, volumes + 0.02);
+    }
+}
+
+namespace {
+
+/** The near and far planes the view's last cull computed. */
+std::pair<double, double> computedNearFar(ShadowedRender& r)
+{
+    osg::Camera* camera = r.renderer->viewer().getCamera();
+    osgViewer::Renderer* renderer = dynamic_cast<osgViewer::Renderer*>(camera->getRenderer());
+    osgUtil::SceneView* view = renderer ? renderer->getSceneView(0) : nullptr;
+    osgUtil::CullVisitor* cv = view ? view->getCullVisitor() : nullptr;
+    if (!cv) return {0.0, 0.0};
+    return {cv->getCalculatedNearPlane(), cv->getCalculatedFarPlane()};
+}
+
+} // namespace
+
+// The stencil volumes compare their faces with the eye's depth buffer. A ground around the
+// eye makes a bounding-volume near plane negative, and the near-far ratio clamps it to far /
+// 2000, too coarse a buffer where outlines fall (docs/shadow-volumes.md, "Precision"). In
+// SHADOW_VOLUME and HYBRID_STENCIL_VOLUMES the receivers' cull takes the near plane from
+// primitives: here the nearest ground in view, at 8.3 units. The other modes, and an
+// explicit ComputeNearFarModeOverride, keep the view's own.
+TEST(ShadowSettingsGL, TheStencilModesTakeTheNearPlaneFromPrimitives)
+{
+    const osshar::RenderOptions options = boxesOnAGround();
+    for (const char* mode : {"volume", "hybrid", "hybrid-stencil", "shadowmap", "volume-override"})
+    {
+        SCOPED_TRACE(mode);
+        const std::string name(mode);
+        ShadowedRender r(options, name.substr(0, name.find('-')), 1024, W, H);
+        ASSERT_TRUE(r.valid());
+        if (name == "hybrid-stencil") r.technique->setHybridMethod(SilhouetteShadowTechnique::HYBRID_STENCIL_VOLUMES);
+        if (name == "volume-override")
+            settingsOf(r).setComputeNearFarModeOverride(osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES);
+        r.renderer->timeFrames(0, 2);
+        const std::pair<double, double> nearFar = computedNearFar(r);
+        ASSERT_GT(nearFar.second, 50.0); // the ground's far side
+        const double ratio = r.renderer->viewer().getCamera()->getNearFarRatio();
+        if (name == "volume" || name == "hybrid-stencil")
+            EXPECT_GT(nearFar.first, 5.0) << "far " << nearFar.second;
+        else
+            EXPECT_LT(nearFar.first, 0.0) << "the ground's sphere holds the eye; clamped to far * " << ratio;
+    }
 }
 
 // MaximumShadowMapDistance: the maps cover the receivers up to that eye distance; beyond
