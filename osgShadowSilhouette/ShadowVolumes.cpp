@@ -25,8 +25,10 @@ namespace {
 constexpr float LIGHT_CAP_SLOPE_OFFSET = 1.0f;
 /** Polygon offset units of the light cap (depth buffer units), on top of its slope. */
 constexpr float LIGHT_CAP_UNITS = 4.0f;
-/** Polygon offset units of a light cap seen from a culled side (culledCapState()). */
-constexpr float CULLED_CAP_UNITS = 1.0f;
+/** Polygon offset units of a light cap seen from a culled side (culledCapState()): enough
+ *  for a face of the same caster that the eye pass draws in the same plane (a concave
+ *  polygon's fan, whose triangles overlap with opposite windings), no slope term. */
+constexpr float CULLED_CAP_UNITS = 4.0f;
 
 /** A caster whose frame's origin lies farther from its centre than this many radii of its
  *  bounding box has its volume's sides drawn about its centre (ShadowVolumeGroup::rebuild):

@@ -84,10 +84,10 @@ void oss_emitCorner(int i)
     EmitVertex();
 }
 
-// A corner of a light cap seen from a culled side, a little behind the surface: in NDC two
+// A corner of a light cap seen from a culled side, a little behind the surface: in NDC four
 // steps of a 24-bit depth buffer (2^-24 of window depth is 2^-23 of NDC depth), as the CPU
-// volumes' unit of polygon offset (ShadowVolumeGroup, CULLED_CAP_UNITS) behind it.
-const float OSS_CULLED_CAP_DEPTH = 2.0 * exp2(-23.0);
+// volumes' four units of polygon offset (ShadowVolumeGroup, CULLED_CAP_UNITS) behind it.
+const float OSS_CULLED_CAP_DEPTH = 4.0 * exp2(-23.0);
 void oss_emitCulledCap(int i)
 {
     vec4 v = gl_in[i].gl_Position;
